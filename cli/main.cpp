@@ -1,0 +1,190 @@
+// phellem: command-line entry point. Typed errors from every module are caught here once:
+// UserError -> exit 2, anything else -> exit 1.
+#include <sys/resource.h>
+
+#include <OpenImageIO/imageio.h>
+#include <tbb/global_control.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli/options.h"
+#include "renderer/atomic_file.h"
+#include "renderer/errors.h"
+#include "renderer/image_output.h"
+#include "renderer/integrator.h"
+#include "renderer/render_scene.h"
+#include "renderer/scene_parser.h"
+
+namespace phellem {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+double peak_rss_mb() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return double(ru.ru_maxrss) / 1024.0;
+}
+
+struct Loaded {
+  SceneDesc desc;
+  RenderSettings settings;
+  int width, height;
+};
+
+Loaded load(const cli::Options& o) {
+  Loaded l{o.scene.empty() ? default_scene() : load_scene_file(o.scene), {}, 0, 0};
+  const RenderDesc& r = l.desc.render;
+  l.width = o.width.value_or(r.width);
+  l.height = o.height.value_or(r.height);
+  l.settings.spp = o.spp.value_or(r.spp);
+  l.settings.max_depth = r.max_depth;
+  l.settings.seed = o.seed.value_or(r.seed);
+  l.settings.filter = r.filter;
+  l.settings.threads = o.threads.value_or(0);
+  l.settings.progress = !o.quiet;
+  return l;
+}
+
+void check_view(const cli::Options& o) {
+  if (o.view.empty()) return;
+  const auto views = ocio_views();
+  if (std::find(views.begin(), views.end(), o.view) == views.end()) {
+    std::string all;
+    for (auto& v : views) all += (all.empty() ? "\"" : ", \"") + v + "\"";
+    throw UserError("", "--view", "unknown view \"" + o.view + "\"; allowed: " + all);
+  }
+}
+
+int run_render(const cli::Options& o) {
+  check_view(o);
+  const auto t0 = Clock::now();
+  Loaded l = load(o);
+  const double t_load = since(t0);
+  const auto t1 = Clock::now();
+  RenderScene scene(l.desc, l.desc.camera, l.width, l.height);
+  const double t_build = since(t1);
+  const Camera camera(l.desc.camera, l.width, l.height);
+  RenderResult res = render_image(scene, camera, l.width, l.height, l.settings);
+  const std::string exr = o.exr.empty() && o.png.empty() ? std::string("render.exr") : o.exr;
+  if (!exr.empty()) write_exr(res.film, exr);
+  if (!o.png.empty()) write_png(res.film, o.png, o.view.empty() ? default_view() : o.view);
+  const double total = since(t0);
+  const auto& gs = scene.stats();
+  if (!o.quiet)
+    std::fprintf(stderr, "phellem: %dx%d, %d spp, %lld triangles (%lld diced), %.2f Mrays/s, %.1fs total\n", l.width, l.height,
+                 l.settings.spp, gs.triangles, gs.diced_triangles, res.rays / res.seconds * 1e-6, total);
+  if (res.invalid_samples > 0)
+    std::fprintf(stderr, "phellem: warning: %lld samples had non-finite radiance and were discarded\n", res.invalid_samples);
+  if (!o.stats.empty()) {
+    nlohmann::json j;
+    j["spp"] = l.settings.spp;
+    j["resolution"] = {l.width, l.height};
+    j["time_s"] = {{"total", total}, {"load", t_load}, {"build", t_build}, {"tessellate", gs.tessellate_s}, {"bvh", gs.bvh_s}, {"render", res.seconds}};
+    j["rays"] = res.rays;
+    j["mrays_per_s"] = res.rays / res.seconds * 1e-6;
+    j["triangles"] = gs.triangles;
+    j["unique_triangles"] = gs.unique_triangles;
+    j["diced_triangles"] = gs.diced_triangles;
+    j["diced_mb"] = gs.diced_bytes / 1048576.0;
+    j["geometry_mb"] = gs.geometry_bytes / 1048576.0;
+    j["embree_mb"] = gs.embree_bytes / 1048576.0;
+    j["dicing_scale"] = gs.dicing_scale;
+    j["peak_rss_mb"] = peak_rss_mb();
+    j["threads"] = l.settings.threads > 0 ? l.settings.threads : int(std::thread::hardware_concurrency());
+    j["invalid_samples"] = res.invalid_samples;
+    write_atomically(o.stats, [&](const std::string& tmp) {
+      std::ofstream f(tmp);
+      f << j.dump(2) << "\n";
+      if (!f) throw UserError(o.stats, "", "cannot write stats");
+    });
+  }
+  return 0;
+}
+
+std::string frame_name(const std::string& pattern, int frame) {
+  std::vector<char> buf(pattern.size() + 64);
+  std::snprintf(buf.data(), buf.size(), pattern.c_str(), frame);
+  return buf.data();
+}
+
+int run_turntable(const cli::Options& o) {
+  check_view(o);
+  // Validate the pattern: exactly one integer conversion.
+  {
+    size_t n = 0;
+    for (size_t i = 0; i + 1 < o.exr.size(); ++i)
+      if (o.exr[i] == '%') {
+        if (o.exr[i + 1] == '%') { ++i; continue; }
+        ++n;
+        size_t j = i + 1;
+        while (j < o.exr.size() && (std::isdigit(static_cast<unsigned char>(o.exr[j])))) ++j;
+        if (j >= o.exr.size() || o.exr[j] != 'd') throw UserError("", "-o", "only %d-style frame fields (e.g. %04d) are allowed");
+      }
+    if (n != 1) throw UserError("", "-o", "the pattern needs exactly one frame field such as %04d");
+  }
+  if (!o.mp4.empty() && std::system("command -v ffmpeg >/dev/null 2>&1") != 0)
+    throw UserError("", "--mp4", "ffmpeg is not installed (apt-get install ffmpeg), so no MP4 can be encoded");
+  Loaded l = load(o);
+  // Geometry is diced once, for the first frame's camera, so it does not crawl.
+  RenderScene scene(l.desc, l.desc.camera, l.width, l.height);
+  const int frames = *o.frames;
+  const float degrees = o.degrees.value_or(360.0f);
+  const bool png = o.png_frames || !o.mp4.empty();
+  for (int f = 0; f < frames; ++f) {
+    const CameraDesc cd = Camera::orbit(l.desc.camera, degrees * float(f) / float(frames));
+    const Camera camera(cd, l.width, l.height);
+    RenderSettings s = l.settings;
+    s.progress_label = "frame " + std::to_string(f + 1) + "/" + std::to_string(frames);
+    const RenderResult res = render_image(scene, camera, l.width, l.height, s);
+    const std::string exr = frame_name(o.exr, f);
+    write_exr(res.film, exr);
+    if (png) write_png(res.film, std::filesystem::path(exr).replace_extension(".png").string(), o.view.empty() ? default_view() : o.view);
+  }
+  if (!o.mp4.empty()) {
+    const std::string png_pattern = std::filesystem::path(o.exr).replace_extension(".png").string();
+    write_atomically(o.mp4, [&](const std::string& tmp) {
+      const std::string cmd = "ffmpeg -loglevel error -y -framerate 24 -i '" + png_pattern + "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + tmp + "'";
+      if (std::system(cmd.c_str()) != 0) throw std::runtime_error("ffmpeg failed to encode " + o.mp4);
+    });
+  }
+  return 0;
+}
+
+}  // namespace
+
+}  // namespace phellem
+
+int main(int argc, char** argv) {
+  using namespace phellem;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
+    std::cout << cli::usage();
+    return 0;
+  }
+  if (!args.empty() && args[0] == "--version") {
+    std::cout << "phellem 0.1.0\n";
+    return 0;
+  }
+  try {
+    const cli::Options o = cli::parse(args);
+    if (o.threads) {
+      static tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(*o.threads));
+    }
+    OIIO::attribute("threads", o.threads.value_or(0));
+    return o.command == "render" ? run_render(o) : run_turntable(o);
+  } catch (const UserError& e) {
+    std::cerr << "phellem: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "phellem: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

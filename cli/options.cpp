@@ -1,0 +1,85 @@
+#include "cli/options.h"
+
+#include <charconv>
+
+#include "renderer/errors.h"
+
+namespace phellem::cli {
+
+namespace {
+
+[[noreturn]] void bad(const std::string& opt, const std::string& what) { throw UserError("", opt, what); }
+
+long long integer(const std::string& opt, const std::string& v, long long lo, long long hi) {
+  long long x = 0;
+  auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (ec != std::errc() || p != v.data() + v.size()) bad(opt, "expected an integer, got \"" + v + "\"");
+  if (x < lo || x > hi) bad(opt, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v);
+  return x;
+}
+
+}  // namespace
+
+std::string usage() {
+  return "usage:\n"
+         "  phellem render [SCENE.json] [-o OUT.exr] [--png OUT.png] [--spp N] [--res WxH] [--threads N]\n"
+         "                 [--seed S] [--stats STATS.json] [--view NAME] [--quiet]\n"
+         "  phellem turntable SCENE.json --frames N -o DIR/frame_%04d.exr [--png] [--mp4 OUT.mp4]\n"
+         "                 [--degrees D] [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
+         "  phellem --help | --version\n"
+         "Without SCENE.json, `render` renders the embedded default scene. See README.md and\n"
+         "docs/scene-format.md.\n";
+}
+
+Options parse(const std::vector<std::string>& args) {
+  Options o;
+  if (args.empty()) bad("", "no command given\n" + usage());
+  o.command = args[0];
+  if (o.command != "render" && o.command != "turntable") bad(o.command, "unknown command; allowed: render, turntable\n" + usage());
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size()) bad(a, "missing value");
+      return args[++i];
+    };
+    if (a == "-o" || a == "--output") o.exr = value();
+    else if (a == "--png") {
+      if (o.command == "turntable") o.png_frames = true;
+      else o.png = value();
+    } else if (a == "--mp4" && o.command == "turntable") o.mp4 = value();
+    else if (a == "--stats") o.stats = value();
+    else if (a == "--spp") o.spp = int(integer(a, value(), 1, 1 << 20));
+    else if (a == "--threads") o.threads = int(integer(a, value(), 1, 1024));
+    else if (a == "--frames" && o.command == "turntable") o.frames = int(integer(a, value(), 1, 100000));
+    else if (a == "--seed") o.seed = uint32_t(integer(a, value(), 0, 0xFFFFFFFFLL));
+    else if (a == "--degrees" && o.command == "turntable") {
+      const std::string v = value();
+      try {
+        size_t used = 0;
+        o.degrees = std::stof(v, &used);
+        if (used != v.size()) throw std::invalid_argument(v);
+      } catch (const std::exception&) {
+        bad(a, "expected a number, got \"" + v + "\"");
+      }
+    } else if (a == "--res") {
+      const std::string v = value();
+      const auto x = v.find('x');
+      if (x == std::string::npos) bad(a, "expected WxH, e.g. 1920x1080, got \"" + v + "\"");
+      o.width = int(integer(a, v.substr(0, x), 1, 32768));
+      o.height = int(integer(a, v.substr(x + 1), 1, 32768));
+    } else if (a == "--view") o.view = value();
+    else if (a == "--quiet" || a == "-q") o.quiet = true;
+    else if (!a.empty() && a[0] == '-') bad(a, "unknown option for `" + o.command + "`\n" + usage());
+    else if (o.scene.empty()) o.scene = a;
+    else bad(a, "more than one scene file given");
+  }
+  if (o.command == "turntable") {
+    if (o.scene.empty()) bad("turntable", "a scene file is required");
+    if (!o.frames) bad("--frames", "required for turntable");
+    if (o.exr.empty()) bad("-o", "required for turntable: a pattern such as out/frame_%04d.exr");
+    if (o.exr.find('%') == std::string::npos) bad("-o", "the output pattern needs a frame number field such as %04d");
+  }
+  return o;
+}
+
+}  // namespace phellem::cli

@@ -1,0 +1,25 @@
+// Command-line parsing for `phellem`: strict, every mistake is a UserError (exit 2).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace phellem::cli {
+
+struct Options {
+  std::string command;
+  std::string scene;  // empty: embedded default scene
+  std::string exr, png, stats, mp4;
+  bool png_frames = false;  // turntable --png
+  std::optional<int> spp, threads, frames, width, height;
+  std::optional<uint32_t> seed;
+  std::optional<float> degrees;
+  std::string view;
+  bool quiet = false;
+};
+
+Options parse(const std::vector<std::string>& args);
+std::string usage();
+
+}  // namespace phellem::cli

@@ -1,0 +1,25 @@
+// Film: per-pixel averages of the beauty and the AOVs (filter-importance-sampled, so every
+// sample weighs the same). Layers and channel names are documented in docs/scene-format.md.
+#pragma once
+
+#include <vector>
+
+namespace phellem {
+
+struct Film {
+  int width = 0, height = 0;
+  std::vector<float> beauty;     // RGBA (A = coverage)
+  std::vector<float> albedo;     // RGB
+  std::vector<float> normal;     // XYZ world-space shading normal
+  std::vector<float> depth;      // Z: distance along the camera ray (0 where nothing is hit)
+  std::vector<float> position;   // XYZ world position
+  std::vector<float> object_id;  // id: 1-based object index of the first sample (0: none)
+  std::vector<float> crack;      // mask, depth (reserved for the bark models)
+
+  Film() = default;
+  Film(int w, int h)
+      : width(w), height(h), beauty(size_t(w) * h * 4), albedo(size_t(w) * h * 3), normal(size_t(w) * h * 3),
+        depth(size_t(w) * h), position(size_t(w) * h * 3), object_id(size_t(w) * h), crack(size_t(w) * h * 2) {}
+};
+
+}  // namespace phellem

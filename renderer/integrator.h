@@ -1,0 +1,30 @@
+// Unidirectional path tracing with next-event estimation and multiple importance sampling
+// (Veach 1997, power heuristic) for every light type, Russian roulette, tiled over TBB.
+#pragma once
+
+#include "renderer/camera.h"
+#include "renderer/film.h"
+#include "renderer/render_scene.h"
+
+namespace phellem {
+
+struct RenderSettings {
+  int spp = 16;
+  int max_depth = 8;
+  uint32_t seed = 0;
+  FilterDesc filter;
+  int threads = 0;          // 0: all cores
+  bool progress = false;
+  std::string progress_label = "render";
+};
+
+struct RenderResult {
+  Film film;
+  long long rays = 0;           // camera + bounce + shadow rays traced
+  long long invalid_samples = 0; // NaN/Inf path contributions discarded
+  double seconds = 0;
+};
+
+RenderResult render_image(const RenderScene& scene, const Camera& camera, int width, int height, const RenderSettings& s);
+
+}  // namespace phellem

@@ -1,0 +1,32 @@
+// Runtime materials: a MaterialDesc with its textures registered, turned into a BSDF at a hit.
+#pragma once
+
+#include "renderer/bsdf.h"
+#include "renderer/scene_desc.h"
+#include "renderer/textures.h"
+
+namespace phellem {
+
+struct Material {
+  MaterialType type = MaterialType::Diffuse;
+  Color base{0.8f, 0.8f, 0.8f};
+  int base_tex = -1, rough_tex = -1, normal_tex = -1;
+  float roughness = 0.5f;
+  float f0 = 0.04f;
+  float ior = 1.5f;
+  Color emission = Color::Zero();  // radiance of emissive materials
+  bool emissive() const { return type == MaterialType::Emissive; }
+};
+
+Material compile_material(const MaterialDesc& d, TextureStore& textures);
+
+struct ShadingInput {
+  Vec2f uv;
+  float footprint;  // texture filter width in uv units
+};
+
+BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInput& in, Color* albedo);
+// Perturbs the shading normal by the material's normal map (tangent space, OpenGL convention).
+Vec3f apply_normal_map(const Material& m, const TextureStore& tex, const ShadingInput& in, const Vec3f& ns, const Vec4f& tangent);
+
+}  // namespace phellem

@@ -1,0 +1,49 @@
+#include "renderer/mesh.h"
+
+namespace phellem {
+
+void compute_vertex_normals(MeshData& m) {
+  std::vector<Vec3f> n(m.positions.size(), Vec3f::Zero());
+  for (size_t f = 0; f + 2 < m.indices.size(); f += 3) {
+    const uint32_t a = m.indices[f], b = m.indices[f + 1], c = m.indices[f + 2];
+    const Vec3f fn = (m.positions[b] - m.positions[a]).cross(m.positions[c] - m.positions[a]);
+    n[a] += fn;
+    n[b] += fn;
+    n[c] += fn;
+  }
+  for (auto& v : n) {
+    const float l = v.norm();
+    v = l > 0 ? Vec3f(v / l) : Vec3f(0, 1, 0);
+  }
+  m.normals = std::move(n);
+}
+
+void compute_tangents(MeshData& m) {
+  if (m.uvs.size() != m.positions.size()) return;
+  std::vector<Vec3f> t(m.positions.size(), Vec3f::Zero()), b(m.positions.size(), Vec3f::Zero());
+  for (size_t f = 0; f + 2 < m.indices.size(); f += 3) {
+    const uint32_t i0 = m.indices[f], i1 = m.indices[f + 1], i2 = m.indices[f + 2];
+    const Vec3f e1 = m.positions[i1] - m.positions[i0], e2 = m.positions[i2] - m.positions[i0];
+    const Vec2f d1 = m.uvs[i1] - m.uvs[i0], d2 = m.uvs[i2] - m.uvs[i0];
+    const float det = d1.x() * d2.y() - d2.x() * d1.y();
+    if (std::abs(det) < 1e-20f) continue;
+    const float r = 1.0f / det;
+    const Vec3f tu = (e1 * d2.y() - e2 * d1.y()) * r;
+    const Vec3f tv = (e2 * d1.x() - e1 * d2.x()) * r;
+    for (uint32_t i : {i0, i1, i2}) {
+      t[i] += tu;
+      b[i] += tv;
+    }
+  }
+  m.tangents.resize(m.positions.size());
+  for (size_t i = 0; i < t.size(); ++i) {
+    const Vec3f n = m.normals.empty() ? Vec3f(0, 0, 1) : m.normals[i];
+    Vec3f tt = t[i] - n * n.dot(t[i]);
+    if (tt.squaredNorm() < 1e-20f) tt = Frame(n).s;
+    tt.normalize();
+    const float w = n.cross(tt).dot(b[i]) < 0.0f ? -1.0f : 1.0f;
+    m.tangents[i] = Vec4f(tt.x(), tt.y(), tt.z(), w);
+  }
+}
+
+}  // namespace phellem

@@ -1,0 +1,32 @@
+// MeshData: an indexed triangle mesh with the per-vertex attributes the renderer shades with.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "renderer/math.h"
+
+namespace phellem {
+
+struct MeshData {
+  std::vector<Vec3f> positions;   // #V
+  std::vector<Vec3f> normals;     // #V or empty (then the geometric normal shades)
+  std::vector<Vec2f> uvs;         // #V or empty
+  std::vector<Vec4f> tangents;    // #V or empty: xyz tangent along +u, w = bitangent sign
+  std::vector<uint32_t> indices;  // #F×3, counter-clockwise seen from the front
+  int material = -1;              // index into the render scene's materials; -1: object's
+
+  size_t triangle_count() const { return indices.size() / 3; }
+  size_t memory_bytes() const {
+    return positions.capacity() * sizeof(Vec3f) + normals.capacity() * sizeof(Vec3f) +
+           uvs.capacity() * sizeof(Vec2f) + tangents.capacity() * sizeof(Vec4f) +
+           indices.capacity() * sizeof(uint32_t);
+  }
+};
+
+// Area-weighted vertex normals from the faces (used after displacement).
+void compute_vertex_normals(MeshData& mesh);
+// Per-vertex tangents from UVs (for normal maps); no-op without UVs.
+void compute_tangents(MeshData& mesh);
+
+}  // namespace phellem

@@ -1,0 +1,59 @@
+#include "renderer/noise.h"
+
+#include "renderer/hash.h"
+
+namespace phellem {
+
+namespace {
+
+inline float fade(float t) { return t * t * t * (t * (t * 6 - 15) + 10); }
+
+inline float grad(uint32_t h, float x, float y, float z) {
+  // The 12 cube-edge gradients of improved Perlin noise.
+  switch (h % 12) {
+    case 0: return x + y;
+    case 1: return -x + y;
+    case 2: return x - y;
+    case 3: return -x - y;
+    case 4: return x + z;
+    case 5: return -x + z;
+    case 6: return x - z;
+    case 7: return -x - z;
+    case 8: return y + z;
+    case 9: return -y + z;
+    case 10: return y - z;
+    default: return -y - z;
+  }
+}
+
+}  // namespace
+
+float gradient_noise(const Vec3f& p, uint32_t seed) {
+  const float fx = std::floor(p.x()), fy = std::floor(p.y()), fz = std::floor(p.z());
+  const int32_t ix = int32_t(fx), iy = int32_t(fy), iz = int32_t(fz);
+  const float x = p.x() - fx, y = p.y() - fy, z = p.z() - fz;
+  auto h = [&](int dx, int dy, int dz) {
+    return hash_all(seed, uint32_t(ix + dx), uint32_t(iy + dy), uint32_t(iz + dz));
+  };
+  const float u = fade(x), v = fade(y), w = fade(z);
+  auto lerp = [](float t, float a, float b) { return a + t * (b - a); };
+  const float x00 = lerp(u, grad(h(0, 0, 0), x, y, z), grad(h(1, 0, 0), x - 1, y, z));
+  const float x10 = lerp(u, grad(h(0, 1, 0), x, y - 1, z), grad(h(1, 1, 0), x - 1, y - 1, z));
+  const float x01 = lerp(u, grad(h(0, 0, 1), x, y, z - 1), grad(h(1, 0, 1), x - 1, y, z - 1));
+  const float x11 = lerp(u, grad(h(0, 1, 1), x, y - 1, z - 1), grad(h(1, 1, 1), x - 1, y - 1, z - 1));
+  return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));
+}
+
+float fbm(const Vec3f& p, uint32_t seed, int octaves, float gain) {
+  float sum = 0, amp = 1, norm = 0;
+  Vec3f q = p;
+  for (int i = 0; i < octaves; ++i) {
+    sum += amp * gradient_noise(q, hash_combine(seed, uint32_t(i)));
+    norm += amp;
+    amp *= gain;
+    q *= 2.03f;
+  }
+  return sum / norm;
+}
+
+}  // namespace phellem

@@ -1,0 +1,104 @@
+// RenderScene: the immutable, compiled form of a SceneDesc that the integrator alone reads —
+// a committed Embree scene (with instancing for mesh files), flat per-geometry records,
+// runtime materials, textures and lights.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/camera.h"
+#include "renderer/light.h"
+#include "renderer/material.h"
+#include "renderer/mesh.h"
+#include "renderer/scene_desc.h"
+#include "renderer/textures.h"
+
+namespace phellem {
+
+struct EmbreeErrors;
+
+struct SurfaceHit {
+  float t = 0;
+  Vec3f p, ng, ns;   // world position, geometric and shading normal (unit; same side)
+  Vec2f uv{0, 0};
+  Vec4f tangent{1, 0, 0, 1};
+  float uv_per_metre = 1.0f;  // for texture footprints
+  int material = 0;
+  int object_id = 0;          // 1-based object index in the scene file
+  int area_light = -1;        // triangle index in the area lights, or -1
+  float crack_mask = 0, crack_depth = 0;  // reserved for bark models
+};
+
+struct GeometryStats {
+  long long triangles = 0;          // all triangles in the Embree scene (instances counted once per instance)
+  long long unique_triangles = 0;   // stored triangles
+  long long diced_triangles = 0;    // produced by adaptive tessellation
+  size_t diced_bytes = 0;           // memory of the diced meshes
+  size_t geometry_bytes = 0;        // vertex/index/attribute arrays
+  size_t embree_bytes = 0;          // peak memory Embree allocated (BVH etc.)
+  double tessellate_s = 0, bvh_s = 0;
+  float dicing_scale = 1.0f;        // >1 when the triangle budget coarsened the dicing
+};
+
+struct DeviceDeleter {
+  void operator()(RTCDevice d) const { rtcReleaseDevice(d); }
+};
+struct SceneDeleter {
+  void operator()(RTCScene s) const { rtcReleaseScene(s); }
+};
+using DevicePtr = std::unique_ptr<RTCDeviceTy, DeviceDeleter>;
+using ScenePtr = std::unique_ptr<RTCSceneTy, SceneDeleter>;
+
+class RenderScene {
+ public:
+  // Compiles the scene. `dicing` is the camera used for screen-space tessellation (the render
+  // camera by default; a turntable passes its first frame so geometry does not crawl).
+  RenderScene(const SceneDesc& desc, const CameraDesc& dicing, int width, int height);
+  ~RenderScene();
+  RenderScene(const RenderScene&) = delete;
+  RenderScene& operator=(const RenderScene&) = delete;
+
+  bool intersect(const Ray& ray, float tmax, SurfaceHit* hit) const;
+  bool occluded(const Vec3f& o, const Vec3f& d, float tmax) const;
+
+  const std::vector<Material>& materials() const { return materials_; }
+  const TextureStore& textures() const { return *textures_; }
+  const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
+  const std::vector<const Light*>& infinite_lights() const { return infinite_; }
+  const AreaLights* area_lights() const { return area_; }
+  // Light selection ∝ power; returns the chosen light and its probability.
+  const Light* pick_light(float u, float* pmf) const;
+  float light_pmf(const Light* l) const;
+  const GeometryStats& stats() const { return stats_; }
+  float scene_radius() const { return radius_; }
+  RTCScene embree_scene() const { return scene_.get(); }
+
+ private:
+  struct Shape;
+  struct Prototype;
+  struct Instance;
+  void add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::shared_ptr<const MeshData> mesh, int material, int object_id, int area_first);
+  void fill_hit(const struct RTCRayHit& rh, const Ray& ray, SurfaceHit* hit) const;
+
+  DevicePtr device_;
+  ScenePtr scene_;
+  std::unique_ptr<TextureStore> textures_;
+  std::vector<Material> materials_;
+  std::vector<Shape> shapes_;
+  std::vector<Prototype> prototypes_;
+  std::vector<Instance> instances_;
+  std::vector<std::unique_ptr<Light>> lights_;
+  std::vector<const Light*> infinite_;
+  AreaLights* area_ = nullptr;
+  Distribution1D light_dist_;
+  GeometryStats stats_;
+  float radius_ = 1;
+  std::shared_ptr<std::atomic<long long>> embree_bytes_now_, embree_bytes_peak_;
+  std::shared_ptr<EmbreeErrors> embree_errors_;
+};
+
+}  // namespace phellem

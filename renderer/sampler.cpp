@@ -1,0 +1,89 @@
+#include "renderer/sampler.h"
+
+#include <array>
+
+#include "renderer/hash.h"
+
+namespace phellem {
+
+namespace {
+
+// Sobol generator matrices for the first four dimensions (Joe & Kuo 2008 direction numbers:
+// dim 0 the van der Corput sequence, then primitive polynomials x+1, x²+x+1, x³+x+1).
+struct SobolMatrices {
+  std::array<std::array<uint32_t, 32>, 4> v;
+  SobolMatrices() {
+    for (int i = 0; i < 32; ++i) v[0][i] = 1u << (31 - i);
+    auto build = [&](int d, int s, uint32_t a, std::initializer_list<uint32_t> m_init) {
+      std::array<uint32_t, 32> m{};
+      int k = 0;
+      for (uint32_t mi : m_init) m[k++] = mi;
+      for (int i = s; i < 32; ++i) {
+        uint32_t x = m[i - s] ^ (m[i - s] << s);
+        for (int j = 1; j < s; ++j) x ^= ((a >> (s - 1 - j)) & 1u) * (m[i - j] << j);
+        m[i] = x;
+      }
+      for (int i = 0; i < 32; ++i) v[d][i] = m[i] << (31 - i);
+    };
+    build(1, 1, 0, {1});
+    build(2, 2, 1, {1, 3});
+    build(3, 3, 1, {1, 3, 1});
+  }
+};
+const SobolMatrices kSobol;
+
+inline uint32_t reverse_bits(uint32_t x) {
+  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
+  return (x >> 16) | (x << 16);
+}
+
+// Laine & Karras 2011 style hash that only propagates bits upwards (Burley 2020, listing 2).
+inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
+}  // namespace
+
+uint32_t sobol_u32(uint32_t index, int dim) {
+  uint32_t x = 0;
+  for (int bit = 0; index; index >>= 1, ++bit)
+    if (index & 1u) x ^= kSobol.v[dim][bit];
+  return x;
+}
+
+uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
+  x = reverse_bits(x);
+  x = laine_karras_permutation(x, seed);
+  return reverse_bits(x);
+}
+
+uint32_t Sampler::hash_pixel(uint32_t px, uint32_t py, uint32_t seed) { return hash_all(px, py, seed, 0x5eedu); }
+
+Vec4f Sampler::get4d() {
+  const uint32_t set_seed = hash_combine(pixel_seed_, dimension_set_++);
+  // Shuffle the sample order per pixel and dimension set (Burley 2020, sec. 4), then
+  // Owen-scramble each dimension independently.
+  const uint32_t shuffled = nested_uniform_scramble(index_, set_seed);
+  Vec4f out;
+  for (int d = 0; d < 4; ++d) {
+    const uint32_t x = nested_uniform_scramble(sobol_u32(shuffled, d), hash_combine(set_seed, uint32_t(d) + 1));
+    out[d] = std::min(u32_to_unit_float(x), kOneMinusEpsilon);
+  }
+  return out;
+}
+
+float Sampler::get1d() { return get4d()[0]; }
+Vec2f Sampler::get2d() {
+  const Vec4f v = get4d();
+  return Vec2f(v[0], v[1]);
+}
+
+}  // namespace phellem

@@ -1,0 +1,42 @@
+// Textures through OpenImageIO's TextureSystem: every image becomes a tiled, mip-mapped,
+// scene-linear .tx file in a cache (sRGB 8-bit inputs are linearized once, by maketx), so
+// lookups are filtered and large texture sets stay out of memory. Procedural textures are
+// evaluated directly.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/math.h"
+#include "renderer/scene_desc.h"
+
+
+namespace phellem {
+
+class TextureStore {
+ public:
+  TextureStore();
+  ~TextureStore();
+  TextureStore(const TextureStore&) = delete;
+  TextureStore& operator=(const TextureStore&) = delete;
+
+  // Registers a texture; returns its handle (-1 for an empty desc). Image problems are
+  // UserErrors naming `where`.
+  int add(const TextureDesc& desc, const Location& where);
+
+  // uv with v up (origin bottom-left); `footprint` is the filter width in uv units.
+  Color rgb(int handle, const Vec2f& uv, float footprint) const;
+  float scalar(int handle, const Vec2f& uv, float footprint) const;
+
+  size_t memory_bytes() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Directory for converted textures ($XDG_CACHE_HOME/phellem or ~/.cache/phellem, else /tmp).
+std::string texture_cache_dir();
+
+}  // namespace phellem
