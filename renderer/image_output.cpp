@@ -7,6 +7,7 @@
 
 #include "renderer/atomic_file.h"
 #include "renderer/errors.h"
+#include "renderer/math.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -81,6 +82,20 @@ void apply_display_view(std::vector<float>& rgb, const std::string& view) {
   auto cpu = cfg->getProcessor(t)->getDefaultCPUProcessor();
   OCIO::PackedImageDesc img(rgb.data(), long(rgb.size() / 3), 1, 3);
   cpu->apply(img);
+}
+
+void srgb_texture_to_linear(float* px, long count, int channels) {
+  auto cpu = config()->getProcessor("sRGB - Texture", "lin_rec709")->getDefaultCPUProcessor();
+  if (channels >= 3) {
+    OCIO::PackedImageDesc img(px, count, 1, channels);
+    cpu->apply(img);
+    return;
+  }
+  std::vector<float> rgb(size_t(count) * 3);
+  for (long i = 0; i < count; ++i) rgb[i * 3] = rgb[i * 3 + 1] = rgb[i * 3 + 2] = px[i * channels];
+  OCIO::PackedImageDesc img(rgb.data(), count, 1, 3);
+  cpu->apply(img);
+  for (long i = 0; i < count; ++i) px[i * channels] = luminance(Color(rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]));
 }
 
 void write_png(const Film& f, const std::string& path, const std::string& view) {

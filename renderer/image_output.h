@@ -25,4 +25,8 @@ void apply_display_view(std::vector<float>& rgb, const std::string& view);
 
 const char* ocio_config_text();
 
+// Decodes sRGB-encoded texture values to scene-linear Rec.709 in place through the OCIO
+// config ("sRGB - Texture" -> "lin_rec709"); `channels` 1–4, alpha (4th) untouched.
+void srgb_texture_to_linear(float* pixels, long count, int channels);
+
 }  // namespace phellem

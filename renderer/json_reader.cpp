@@ -28,6 +28,12 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
     if (pos != std::string::npos) msg = msg.substr(pos);
     throw UserError(file, "line " + std::to_string(line) + ", column " + std::to_string(col),
                     "invalid JSON: " + msg);
+  } catch (const nlohmann::json::exception& e) {
+    // e.g. out_of_range 406: a literal such as 1e999 that overflows to infinity.
+    std::string msg = e.what();
+    const auto pos = msg.find(']');
+    if (pos != std::string::npos) msg = msg.substr(pos + 2);
+    throw UserError(file, "", "invalid JSON: " + msg + " (numbers must be finite)");
   }
 }
 

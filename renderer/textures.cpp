@@ -10,6 +10,7 @@
 
 #include "renderer/errors.h"
 #include "renderer/hash.h"
+#include "renderer/image_output.h"
 #include "renderer/noise.h"
 
 namespace phellem {
@@ -63,15 +64,24 @@ std::string make_tx(const TextureDesc& d, const Location& where) {
   config.attribute("maketx:fixnan", "box3");
   config.attribute("tile_width", 64);
   config.attribute("tile_height", 64);
-  if (d.srgb && eight_bit) {
-    config.attribute("maketx:incolorspace", "sRGB");
-    config.attribute("maketx:outcolorspace", "linear");
-    config.attribute("maketx:forcefloat", 1);
-    config.format = OIIO::TypeDesc::HALF;
-  }
   const fs::path tmp = out.string() + "." + std::to_string(getpid()) + ".tmp.tx";
   std::stringstream log;
-  if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, d.file, tmp.string(), config, &log)) {
+  bool ok;
+  if (d.srgb && eight_bit) {
+    // sRGB 8-bit colour: decode to linear through the OCIO config, store as half.
+    OIIO::ImageBuf buf(d.file);
+    if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+      throw UserError(where.file, where.path, "cannot read image " + d.file + ": " + buf.geterror());
+    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
+    buf.get_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, px.data());
+    srgb_texture_to_linear(px.data(), long(spec.width) * spec.height, spec.nchannels);
+    OIIO::ImageBuf lin(OIIO::ImageSpec(spec.width, spec.height, spec.nchannels, OIIO::TypeDesc::FLOAT), px.data());
+    config.format = OIIO::TypeDesc::HALF;
+    ok = OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, lin, tmp.string(), config, &log);
+  } else {
+    ok = OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, d.file, tmp.string(), config, &log);
+  }
+  if (!ok) {
     fs::remove(tmp, ec);
     throw UserError(where.file, where.path, "cannot convert texture " + d.file + ": " + OIIO::geterror());
   }
