@@ -33,6 +33,9 @@ std::string texture_cache_dir() {
 
 namespace {
 
+// Bump when the conversion changes so stale cached .tx files are not reused.
+constexpr uint32_t kTextureCacheVersion = 2;
+
 struct Entry {
   TextureDesc desc;
   OIIO::TextureSystem::TextureHandle* handle = nullptr;
@@ -48,6 +51,7 @@ std::string make_tx(const TextureDesc& d, const Location& where) {
   uint32_t h = hash_u32(uint32_t(size)) ^ hash_u32(uint32_t(mtime)) ^ hash_u32(uint32_t(uint64_t(mtime) >> 32));
   for (char c : d.file) h = hash_combine(h, uint8_t(c));
   h = hash_combine(h, d.srgb ? 1 : 0);
+  h = hash_combine(h, kTextureCacheVersion);
   char name[64];
   std::snprintf(name, sizeof name, "%08x.tx", h);
   const fs::path out = fs::path(texture_cache_dir()) / name;

@@ -12,6 +12,7 @@
 #include "render_helpers.h"
 #include "renderer/errors.h"
 #include "renderer/mesh_io.h"
+#include "renderer/textures.h"
 #include "test_util.h"
 
 namespace phellem {
@@ -246,6 +247,30 @@ TEST(Obj, LoadsTrianglesAndRejectsGarbage) {
   EXPECT_EQ(m.meshes[0].triangle_count(), 2u);
   test::write_text(dir + "/bad.obj", "v 0 0 0\nf 1 2 3\n");
   EXPECT_THROW(load_obj(dir + "/bad.obj"), UserError);
+}
+
+}  // namespace
+}  // namespace phellem
+
+namespace phellem {
+namespace {
+
+TEST(Textures, SrgbImagesAreLinearizedAndFiltered) {
+  const std::string dir = test::temp_dir("texstore");
+  write_png_texture(dir + "/tex.png");  // sRGB 188 everywhere
+  TextureStore store;
+  TextureDesc d;
+  d.file = dir + "/tex.png";
+  const int h = store.add(d, {"<t>", "/t"});
+  const Color c = store.rgb(h, Vec2f(0.3f, 0.6f), 0.0f);
+  EXPECT_NEAR(c[0], 0.5029f, 0.01f);  // sRGB 188/255 decoded
+  d.srgb = false;
+  const int raw = store.add(d, {"<t>", "/t"});
+  EXPECT_NEAR(store.rgb(raw, Vec2f(0.3f, 0.6f), 0.0f)[0], 188.0f / 255.0f, 0.01f);
+  TextureDesc missing;
+  missing.file = dir + "/corrupt.png";
+  test::write_text(missing.file, "not an image");
+  EXPECT_THROW(store.add(missing, {"<t>", "/t"}), UserError);
 }
 
 }  // namespace

@@ -1,0 +1,93 @@
+// Output files: the EXR layers and channel names, the display-referred PNG, turntables.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+
+#include "renderer/image_output.h"
+#include "test_util.h"
+
+namespace phellem {
+namespace {
+
+TEST(Output, ExrHasTheDocumentedLayersAndPngIsDisplayReferred) {
+  const std::string dir = test::temp_dir("output");
+  const auto r = test::run_phellem(std::string("render ") + PHELLEM_SOURCE_DIR + "/tests/scenes/spheres_env.json --spp 2 -o " + dir +
+                                   "/o.exr --png " + dir + "/o.png");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto in = OIIO::ImageInput::open(dir + "/o.exr");
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  // OpenEXR stores channels sorted by name; compare as sets and look channels up by name.
+  auto sorted = [](std::vector<std::string> v) { std::sort(v.begin(), v.end()); return v; };
+  EXPECT_EQ(sorted(spec.channelnames), sorted(exr_channel_names()));
+  auto ch = [&](const char* name) { return spec.channelindex(name); };
+  EXPECT_EQ(spec.width, 64);
+  EXPECT_EQ(spec.height, 40);
+  EXPECT_EQ(spec.channelformat(ch("beauty.R")), OIIO::TypeDesc::HALF);
+  EXPECT_EQ(spec.channelformat(ch("object_id.id")), OIIO::TypeDesc::FLOAT);  // object ids stay exact
+  std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
+  ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+  // Centre pixel: the gold sphere (object 2), normal facing the camera, depth ≈ 4.1.
+  const size_t c = (size_t(20) * 64 + 32) * spec.nchannels;
+  EXPECT_EQ(px[c + ch("object_id.id")], 2.0f);
+  EXPECT_GT(px[c + ch("normal.Z")], 0.8f);
+  EXPECT_NEAR(px[c + ch("depth.Z")], 4.1f, 0.3f);
+  EXPECT_EQ(px[c + ch("beauty.A")], 1.0f);
+  EXPECT_EQ(px[c + ch("crack.mask")], 0.0f);  // reserved: zero until bark models land
+  EXPECT_GT(px[c + ch("albedo.R")], 0.9f);    // gold F0
+  in->close();
+
+  auto png = OIIO::ImageInput::open(dir + "/o.png");
+  ASSERT_TRUE(png);
+  EXPECT_EQ(png->spec().format, OIIO::TypeDesc::UINT8);
+  EXPECT_EQ(png->spec().nchannels, 3);
+}
+
+TEST(Output, DisplayViewsMapMidGreyAndClipHighlights) {
+  const auto views = ocio_views();
+  ASSERT_GE(views.size(), 3u);
+  EXPECT_EQ(default_view(), "ACES 1.0 SDR-video");
+  // Standard: plain sRGB encoding of scene-linear 0.18 is 0.461.
+  std::vector<float> grey = {0.18f, 0.18f, 0.18f, 100.0f, 100.0f, 100.0f};
+  apply_display_view(grey, "Standard");
+  EXPECT_NEAR(grey[0], 0.461f, 0.01f);
+  EXPECT_GE(grey[3], 0.999f);
+  // ACES: filmic, mid grey lands lower and highlights roll off below white... but reach it.
+  std::vector<float> aces = {0.18f, 0.18f, 0.18f, 1.0f, 1.0f, 1.0f};
+  apply_display_view(aces, "ACES 1.0 SDR-video");
+  std::printf("ACES view: 0.18 -> %.3f, 1.0 -> %.3f\n", aces[0], aces[3]);
+  EXPECT_GT(aces[0], 0.3f);
+  EXPECT_LT(aces[0], 0.46f);
+  EXPECT_GT(aces[3], aces[0]);
+  EXPECT_LT(aces[3], 1.0f);
+  // sRGB texture decode: 0.5 encoded ≈ 0.214 linear.
+  float tex[3] = {0.5f, 0.5f, 0.5f};
+  srgb_texture_to_linear(tex, 1, 3);
+  EXPECT_NEAR(tex[0], 0.214f, 0.003f);
+}
+
+TEST(Output, TurntableWritesEveryFrameAndOrbits) {
+  const std::string dir = test::temp_dir("turntable");
+  const auto r = test::run_phellem(std::string("turntable ") + PHELLEM_SOURCE_DIR + "/tests/scenes/displaced_trunk.json --frames 3 --spp 1 --res 24x32 -o " +
+                                   dir + "/f_%04d.exr --png");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (int f = 0; f < 3; ++f) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/f_%04d", f);
+    EXPECT_TRUE(std::filesystem::exists(dir + name + ".exr")) << name;
+    EXPECT_TRUE(std::filesystem::exists(dir + name + ".png")) << name;
+  }
+  // Frames differ (the camera moved) while the geometry is the same (dicing camera fixed).
+  auto read_pos = [&](const std::string& f) {
+    auto in = OIIO::ImageInput::open(f);
+    std::vector<float> px(size_t(in->spec().image_pixels()) * in->spec().nchannels);
+    in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, px.data());
+    return px;
+  };
+  EXPECT_NE(read_pos(dir + "/f_0000.exr"), read_pos(dir + "/f_0001.exr"));
+}
+
+}  // namespace
+}  // namespace phellem
