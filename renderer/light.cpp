@@ -62,17 +62,17 @@ Vec3f EnvironmentMap::to_world(const Vec3f& w) const {
   return Vec3f(cos_r_ * w.x() + sin_r_ * w.z(), w.y(), -sin_r_ * w.x() + cos_r_ * w.z());
 }
 
-Color EnvironmentMap::Le(const Vec3f& dir) const {
+Color EnvironmentMap::Le(const Vec3f& dir) const { return bilinear(direction_to_uv(to_local(dir))) * intensity_; }
+
+Color EnvironmentMap::bilinear(const Vec2f& uv) const {
   // Bilinear lookup (the pdf stays piecewise constant; that is still unbiased).
-  const Vec2f uv = direction_to_uv(to_local(dir));
   const float fx = uv.x() * w_ - 0.5f, fy = std::clamp(uv.y() * h_ - 0.5f, 0.0f, float(h_ - 1));
   const int x0 = int(std::floor(fx)), y0 = std::min(int(fy), h_ - 1);
   const float tx = fx - std::floor(fx), ty = fy - y0;
   const int y1 = std::min(y0 + 1, h_ - 1);
   auto wrap = [&](int x) { return ((x % w_) + w_) % w_; };
-  const Color c = (1 - ty) * ((1 - tx) * texel(wrap(x0), y0) + tx * texel(wrap(x0 + 1), y0)) +
-                  ty * ((1 - tx) * texel(wrap(x0), y1) + tx * texel(wrap(x0 + 1), y1));
-  return c * intensity_;
+  return (1 - ty) * ((1 - tx) * texel(wrap(x0), y0) + tx * texel(wrap(x0 + 1), y0)) +
+         ty * ((1 - tx) * texel(wrap(x0), y1) + tx * texel(wrap(x0 + 1), y1));
 }
 
 std::optional<LightSample> EnvironmentMap::sample(const Vec3f&, const Vec2f& u) const {
@@ -84,7 +84,7 @@ std::optional<LightSample> EnvironmentMap::sample(const Vec3f&, const Vec2f& u) 
   LightSample s;
   s.wi = to_world(uv_to_direction(uv));
   s.pdf = pdf_uv / (2 * kPi * kPi * sin_t);
-  s.L = Le(s.wi);
+  s.L = bilinear(uv) * intensity_;  // the same radiance function as Le(): MIS stays consistent
   s.dist = kInf;
   return s;
 }

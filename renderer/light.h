@@ -65,6 +65,7 @@ class EnvironmentMap final : public Light {
   Vec3f to_local(const Vec3f& w) const;
   Vec3f to_world(const Vec3f& w) const;
   Color texel(int x, int y) const;
+  Color bilinear(const Vec2f& uv) const;
   std::vector<float> rgb_;
   int w_, h_;
   float intensity_;

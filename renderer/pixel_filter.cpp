@@ -3,10 +3,21 @@
 namespace phellem {
 
 PixelFilter::PixelFilter(const FilterDesc& desc) : desc_(desc), radius_(desc.radius) {
-  const int n = 512;
-  std::vector<float> f(n);
-  for (int i = 0; i < n; ++i) f[i] = evaluate(((i + 0.5f) / n * 2.0f - 1.0f) * radius_);
-  dist_ = Distribution1D(std::move(f));
+  // Tabulate the cdf finely, then invert it onto an evenly spaced table.
+  const int n = 4096;
+  std::vector<double> cdf(n + 1, 0.0);
+  for (int i = 0; i < n; ++i) cdf[i + 1] = cdf[i] + evaluate(((i + 0.5f) / n * 2.0f - 1.0f) * radius_);
+  for (auto& c : cdf) c /= cdf[n];
+  const int m = 2048;
+  inverse_cdf_.resize(m + 1);
+  int j = 0;
+  for (int k = 0; k <= m; ++k) {
+    const double target = double(k) / m;
+    while (j < n - 1 && cdf[j + 1] < target) ++j;
+    const double w = cdf[j + 1] - cdf[j];
+    const double f = w > 0 ? std::clamp((target - cdf[j]) / w, 0.0, 1.0) : 0.0;
+    inverse_cdf_[k] = float((j + f) / n);
+  }
 }
 
 float PixelFilter::evaluate(float x) const {
@@ -30,10 +41,13 @@ float PixelFilter::evaluate(float x) const {
 }
 
 Vec2f PixelFilter::sample(const Vec2f& u) const {
-  float pdf;
-  const float x = dist_.sample(u.x(), &pdf);
-  const float y = dist_.sample(u.y(), &pdf);
-  return Vec2f((2 * x - 1) * radius_, (2 * y - 1) * radius_);
+  auto invert = [&](float v) {
+    const float t = v * float(inverse_cdf_.size() - 1);
+    const int i = std::min(int(t), int(inverse_cdf_.size()) - 2);
+    const float f = t - float(i);
+    return inverse_cdf_[i] * (1 - f) + inverse_cdf_[i + 1] * f;
+  };
+  return Vec2f((2 * invert(u.x()) - 1) * radius_, (2 * invert(u.y()) - 1) * radius_);
 }
 
 }  // namespace phellem

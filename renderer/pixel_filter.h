@@ -19,7 +19,7 @@ class PixelFilter {
  private:
   FilterDesc desc_;
   float radius_;
-  Distribution1D dist_;
+  std::vector<float> inverse_cdf_;  // x ∈ [0,1] at evenly spaced cdf values (O(1) sampling)
 };
 
 }  // namespace phellem

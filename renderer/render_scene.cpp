@@ -392,6 +392,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     power.push_back(std::max(0.0f, l->power(radius_)));
   }
   if (!power.empty()) light_dist_ = Distribution1D(power);
+  for (size_t i = 0; i < lights_.size(); ++i) light_pmf_.push_back(light_dist_.pmf(i));
 }
 
 const Light* RenderScene::pick_light(float u, float* pmf) const {
@@ -402,7 +403,7 @@ const Light* RenderScene::pick_light(float u, float* pmf) const {
 
 float RenderScene::light_pmf(const Light* l) const {
   for (size_t i = 0; i < lights_.size(); ++i)
-    if (lights_[i].get() == l) return light_dist_.pmf(i);
+    if (lights_[i].get() == l) return light_pmf_[i];
   return 0;
 }
 

@@ -95,6 +95,7 @@ class RenderScene {
   std::vector<const Light*> infinite_;
   AreaLights* area_ = nullptr;
   Distribution1D light_dist_;
+  std::vector<float> light_pmf_;
   GeometryStats stats_;
   float radius_ = 1;
   std::shared_ptr<std::atomic<long long>> embree_bytes_now_, embree_bytes_peak_;

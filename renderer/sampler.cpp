@@ -28,7 +28,17 @@ struct SobolMatrices {
     build(1, 1, 0, {1});
     build(2, 2, 1, {1, 3});
     build(3, 3, 1, {1, 3, 1});
+    // Byte tables: the product of a generator matrix with 8 bits of the index at a time.
+    for (int d = 0; d < 4; ++d)
+      for (int k = 0; k < 4; ++k)
+        for (int b = 0; b < 256; ++b) {
+          uint32_t x = 0;
+          for (int bit = 0; bit < 8; ++bit)
+            if (b & (1 << bit)) x ^= v[d][8 * k + bit];
+          table[d][k][b] = x;
+        }
   }
+  std::array<std::array<std::array<uint32_t, 256>, 4>, 4> table;
 };
 const SobolMatrices kSobol;
 
@@ -53,10 +63,8 @@ inline uint32_t laine_karras_permutation(uint32_t x, uint32_t seed) {
 }  // namespace
 
 uint32_t sobol_u32(uint32_t index, int dim) {
-  uint32_t x = 0;
-  for (int bit = 0; index; index >>= 1, ++bit)
-    if (index & 1u) x ^= kSobol.v[dim][bit];
-  return x;
+  const auto& t = kSobol.table[dim];
+  return t[0][index & 0xFF] ^ t[1][(index >> 8) & 0xFF] ^ t[2][(index >> 16) & 0xFF] ^ t[3][index >> 24];
 }
 
 uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {

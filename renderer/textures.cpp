@@ -99,8 +99,8 @@ Color procedural_bark(const TextureDesc& d, const Vec2f& uv) {
   const float a = kTwoPi * uv.x() * d.scale.x() / std::max(1.0f, std::round(d.scale.x()));
   const float ring = std::max(1.0f, std::round(d.scale.x())) / kTwoPi;
   const Vec3f q(std::cos(a) * ring * 3.0f, std::sin(a) * ring * 3.0f, uv.y() * d.scale.y());
-  const float streak = fbm(Vec3f(q.x(), q.y(), q.z() * 0.25f), 11, 4);
-  const float fleck = fbm(q * 4.0f, 23, 3);
+  const float streak = fbm(Vec3f(q.x(), q.y(), q.z() * 0.25f), 11, 3);
+  const float fleck = gradient_noise(q * 4.0f, 23);
   const float t = std::clamp(0.55f + 0.9f * streak + 0.25f * fleck, 0.0f, 1.0f);
   return d.color_b + (d.color_a - d.color_b) * t;
 }
