@@ -21,7 +21,13 @@ void ensure_parent_dir(const std::string& path) {
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
   ensure_parent_dir(path);
   const fs::path target(path);
-  const fs::path tmp = target.parent_path() / ("." + target.stem().string() + ".tmp" + std::to_string(getpid()) + target.extension().string());
+  // Hidden temporary with the same extension: ".NAME.tmpPID.EXT".
+  std::string name(1, '.');
+  name += target.stem().string();
+  name += ".tmp";
+  name += std::to_string(getpid());
+  name += target.extension().string();
+  const fs::path tmp = target.parent_path() / name;
   try {
     write(tmp.string());
   } catch (...) {
