@@ -91,3 +91,53 @@ TEST(Output, TurntableWritesEveryFrameAndOrbits) {
 
 }  // namespace
 }  // namespace phellem
+
+namespace phellem {
+namespace {
+
+TEST(Output, EnvironmentFileLightsAPlaneByItsIrradiance) {
+  // A constant 2.0 .hdr map: a plane of albedo 0.25 facing up shows ρ·L = 0.5.
+  const std::string dir = test::temp_dir("envfile");
+  {
+    auto out = OIIO::ImageOutput::create(dir + "/sky.hdr");
+    OIIO::ImageSpec spec(32, 16, 3, OIIO::TypeDesc::FLOAT);
+    std::vector<float> px(32 * 16 * 3, 2.0f);
+    ASSERT_TRUE(out->open(dir + "/sky.hdr", spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+    out->close();
+  }
+  test::write_text(dir + "/scene.json", R"({
+    "camera": {"position": [0, 1, 0.001], "look_at": [0, 0, 0], "fov_deg": 10},
+    "render": {"resolution": [8, 8], "spp": 256, "max_depth": 2},
+    "lights": [{"type": "environment", "file": "sky.hdr", "intensity": 1, "rotation_deg": 40}],
+    "materials": {"m": {"type": "diffuse", "base_color": [0.25, 0.25, 0.25]}},
+    "objects": [{"type": "plane", "size": 1000, "material": "m"}]})");
+  const auto r = test::run_phellem("render " + dir + "/scene.json -o " + dir + "/o.exr");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto in = OIIO::ImageInput::open(dir + "/o.exr");
+  const auto& spec = in->spec();
+  std::vector<float> px(size_t(spec.image_pixels()) * spec.nchannels);
+  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data());
+  double sum = 0;
+  for (size_t p = 0; p < size_t(spec.image_pixels()); ++p) sum += px[p * spec.nchannels + spec.channelindex("beauty.G")];
+  EXPECT_NEAR(sum / spec.image_pixels(), 0.5, 0.01);
+  // A corrupt map is a user error naming the light.
+  test::write_text(dir + "/bad.hdr", "#?RADIANCE\ngarbage");
+  test::write_text(dir + "/bad.json", R"({"lights": [{"type": "environment", "file": "bad.hdr"}], "render": {"resolution": [4, 4], "spp": 1}})");
+  const auto b = test::run_phellem("render " + dir + "/bad.json -o " + dir + "/b.exr");
+  EXPECT_EQ(b.exit_code, 2) << b.output;
+  EXPECT_NE(b.output.find("/lights/0/file"), std::string::npos) << b.output;
+}
+
+TEST(Output, Mp4WithoutFfmpegIsAClearError) {
+  if (std::system("command -v ffmpeg >/dev/null 2>&1") == 0) GTEST_SKIP() << "ffmpeg is installed here";
+  const std::string dir = test::temp_dir("mp4");
+  const auto r = test::run_phellem(std::string("turntable ") + PHELLEM_SOURCE_DIR + "/tests/scenes/displaced_trunk.json --frames 2 -o " + dir +
+                                   "/f_%04d.exr --mp4 " + dir + "/t.mp4");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("ffmpeg is not installed"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/f_0000.exr"));  // refused before rendering
+}
+
+}  // namespace
+}  // namespace phellem
