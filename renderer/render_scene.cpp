@@ -258,12 +258,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
       case ObjectType::Mesh: {
         auto it = models.find(o.file);
         if (it == models.end()) {
-          LoadedModel model;
-          try {
-            model = load_mesh_file(o.file);
-          } catch (const UserError& e) {
-            throw;
-          }
+          LoadedModel model = load_mesh_file(o.file);
           const int first = int(materials_.size());
           for (const auto& md : model.materials) materials_.push_back(compile_material(md, *textures_));
           it = models.emplace(o.file, std::make_pair(std::move(model), first)).first;

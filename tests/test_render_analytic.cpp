@@ -47,8 +47,7 @@ TEST(WhiteFurnace, BarkConductorAndDielectricNeverGainEnergy) {
   }
 }
 
-std::string sun_plane_scene(const Vec3f& sun_dir, float angle_deg, int threads_hint = 0) {
-  (void)threads_hint;
+std::string sun_plane_scene(const Vec3f& sun_dir, float angle_deg) {
   char buf[1024];
   std::snprintf(buf, sizeof buf, R"({
     "camera": {"position": [0, 3, 0.001], "look_at": [0, 0, 0], "fov_deg": 30},
