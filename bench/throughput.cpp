@@ -62,20 +62,7 @@ double raw_embree_mrays(RTCScene scene, const RayBatch& b, int threads) {
       rtcInitIntersectContext(&ctx);
       long local = 0;
       for (size_t i = r.begin(); i < r.end(); ++i) {
-        RTCRayHit rh;
-        rh.ray.org_x = b.o[i].x();
-        rh.ray.org_y = b.o[i].y();
-        rh.ray.org_z = b.o[i].z();
-        rh.ray.dir_x = b.d[i].x();
-        rh.ray.dir_y = b.d[i].y();
-        rh.ray.dir_z = b.d[i].z();
-        rh.ray.tnear = 0;
-        rh.ray.tfar = 1e30f;
-        rh.ray.mask = 0xFFFFFFFF;
-        rh.ray.flags = 0;
-        rh.ray.time = 0;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        RTCRayHit rh = make_rayhit(b.o[i], b.d[i], 1e30f);
         rtcIntersect1(scene, &ctx, &rh);
         local += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
       }

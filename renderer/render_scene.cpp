@@ -405,21 +405,7 @@ float RenderScene::light_pmf(const Light* l) const {
 bool RenderScene::intersect(const Ray& ray, float tmax, SurfaceHit* hit) const {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  RTCRayHit rh;
-  rh.ray.org_x = ray.o.x();
-  rh.ray.org_y = ray.o.y();
-  rh.ray.org_z = ray.o.z();
-  rh.ray.dir_x = ray.d.x();
-  rh.ray.dir_y = ray.d.y();
-  rh.ray.dir_z = ray.d.z();
-  rh.ray.tnear = 0.0f;
-  rh.ray.tfar = tmax;
-  rh.ray.time = 0;
-  rh.ray.mask = 0xFFFFFFFF;
-  rh.ray.id = 0;
-  rh.ray.flags = 0;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = make_rayhit(ray.o, ray.d, tmax);
   rtcIntersect1(scene_.get(), &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   fill_hit(rh, ray, hit);
@@ -429,19 +415,7 @@ bool RenderScene::intersect(const Ray& ray, float tmax, SurfaceHit* hit) const {
 bool RenderScene::occluded(const Vec3f& o, const Vec3f& d, float tmax) const {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  RTCRay r;
-  r.org_x = o.x();
-  r.org_y = o.y();
-  r.org_z = o.z();
-  r.dir_x = d.x();
-  r.dir_y = d.y();
-  r.dir_z = d.z();
-  r.tnear = 0.0f;
-  r.tfar = tmax;
-  r.time = 0;
-  r.mask = 0xFFFFFFFF;
-  r.id = 0;
-  r.flags = 0;
+  RTCRay r = make_rayhit(o, d, tmax).ray;
   rtcOccluded1(scene_.get(), &ctx, &r);
   return r.tfar < 0.0f;
 }

@@ -53,6 +53,26 @@ struct SceneDeleter {
 using DevicePtr = std::unique_ptr<RTCDeviceTy, DeviceDeleter>;
 using ScenePtr = std::unique_ptr<RTCSceneTy, SceneDeleter>;
 
+// An Embree ray/hit record for a ray from o along d up to tmax, nothing hit yet.
+inline RTCRayHit make_rayhit(const Vec3f& o, const Vec3f& d, float tmax) {
+  RTCRayHit rh;
+  rh.ray.org_x = o.x();
+  rh.ray.org_y = o.y();
+  rh.ray.org_z = o.z();
+  rh.ray.dir_x = d.x();
+  rh.ray.dir_y = d.y();
+  rh.ray.dir_z = d.z();
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = tmax;
+  rh.ray.time = 0;
+  rh.ray.mask = 0xFFFFFFFF;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
 class RenderScene {
  public:
   // Compiles the scene. `dicing` is the camera used for screen-space tessellation (the render
