@@ -54,13 +54,7 @@ Loaded load(const cli::Options& o) {
 }
 
 void check_view(const cli::Options& o) {
-  if (o.view.empty()) return;
-  const auto views = ocio_views();
-  if (std::find(views.begin(), views.end(), o.view) == views.end()) {
-    std::string all;
-    for (auto& v : views) all += (all.empty() ? "\"" : ", \"") + v + "\"";
-    throw UserError("", "--view", "unknown view \"" + o.view + "\"; allowed: " + all);
-  }
+  if (!o.view.empty()) require_view(o.view);
 }
 
 int run_render(const cli::Options& o) {

@@ -71,6 +71,14 @@ std::vector<std::string> ocio_views() {
   return v;
 }
 
+void require_view(const std::string& view) {
+  const auto views = ocio_views();
+  if (std::find(views.begin(), views.end(), view) != views.end()) return;
+  std::string all;
+  for (auto& v : views) all += (all.empty() ? "\"" : ", \"") + v + "\"";
+  throw UserError("", "--view", "unknown view \"" + view + "\"; allowed: " + all);
+}
+
 std::string default_view() { return config()->getDefaultView("sRGB"); }
 
 void apply_display_view(std::vector<float>& rgb, const std::string& view) {
@@ -99,12 +107,7 @@ void srgb_texture_to_linear(float* px, long count, int channels) {
 }
 
 void write_png(const Film& f, const std::string& path, const std::string& view) {
-  const auto views = ocio_views();
-  if (std::find(views.begin(), views.end(), view) == views.end()) {
-    std::string all;
-    for (auto& v : views) all += (all.empty() ? "\"" : ", \"") + v + "\"";
-    throw UserError("", "--view", "unknown view \"" + view + "\"; allowed: " + all);
-  }
+  require_view(view);
   const size_t n = size_t(f.width) * f.height;
   std::vector<float> rgb(n * 3);
   for (size_t p = 0; p < n; ++p)

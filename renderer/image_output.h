@@ -18,6 +18,8 @@ void write_exr(const Film& film, const std::string& path);
 // view: one of ocio_views(); display "sRGB".
 void write_png(const Film& film, const std::string& path, const std::string& view);
 std::vector<std::string> ocio_views();
+// UserError (naming --view) unless `view` is one of ocio_views().
+void require_view(const std::string& view);
 std::string default_view();
 
 // Applies the display view to linear RGB (n pixels, in place) — exposed for tests.

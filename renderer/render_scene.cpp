@@ -440,7 +440,8 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
     hit->ng = hit->ns = n;
     hit->uv = Vec2f(0.5f + std::atan2(n.z(), n.x()) / kTwoPi, 1.0f - std::acos(std::clamp(n.y(), -1.0f, 1.0f)) / kPi);
     const Vec3f t = Vec3f(-n.z(), 0, n.x());
-    hit->tangent = t.squaredNorm() > 0 ? Vec4f(t.normalized().x(), 0, t.normalized().z(), 1) : Vec4f(1, 0, 0, 1);
+    const float len = t.norm();
+    hit->tangent = len > 0 ? Vec4f(t.x() / len, 0, t.z() / len, 1) : Vec4f(1, 0, 0, 1);
     hit->uv_per_metre = 1.0f / (kTwoPi * shape->radius);
     return;
   }
