@@ -1,7 +1,7 @@
 // Image regression: tiny scenes rendered at low spp against references rendered at high spp
 // (scripts/make_reference_images.sh). Metric: mean over 4×4 blocks of
 // |test − ref| / (ref + 0.05), per channel, on block averages (noise averages out, structure
-// does not). Tolerance 0.06. An error image is written next to the build on failure.
+// does not). Tolerance 0.06. On failure a per-block error image is written to the test temp directory.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -71,7 +71,11 @@ TEST_P(ImageRegression, MatchesReference) {
   err /= blocks;
   std::printf("image regression %s: mean block relative error %.4f (tolerance %.2f, %d spp vs reference)\n", name.c_str(), err,
               kTolerance, d.render.spp);
-  if (err >= kTolerance) write_exr(diff, "regression_error_" + name + ".exr");
+  if (err >= kTolerance) {
+    const std::string diff_path = ::testing::TempDir() + "regression_error_" + name + ".exr";
+    write_exr(diff, diff_path);
+    std::printf("per-block error image written to %s\n", diff_path.c_str());
+  }
   EXPECT_LT(err, kTolerance);
 }
 
