@@ -109,25 +109,23 @@ int main(int argc, char** argv) {
 
   auto render_mrays = [&](int threads) {
     s.threads = threads;
-    std::vector<double> v;
-    long long rays = 0;
-    for (int r = 0; r < repeat; ++r) {
-      const RenderResult res = render_image(*scene, cam, w, h, s);
-      v.push_back(res.rays / res.seconds * 1e-6);
-      rays = res.rays;
-    }
-    return std::make_pair(median(v), rays);
+    const RenderResult res = render_image(*scene, cam, w, h, s);
+    return std::make_pair(res.rays / res.seconds * 1e-6, res.rays);
   };
-  const auto [renderer_n, rays] = render_mrays(cores);
-  const auto [renderer_1, rays1] = render_mrays(1);
-  (void)rays1;
+  const long long rays = render_mrays(cores).second;  // warm-up, and the ray count
   const RayBatch batch = make_rays(*scene, cam, w, h, size_t(std::min<long long>(rays, 4'000'000)));
-  std::vector<double> raw_n, raw_1;
+  // Renderer and raw Embree alternate within each repetition, so that both see the same
+  // machine load; the ratio is taken per repetition and its median reported.
+  std::vector<double> ren_n, ren_1, raw_n, raw_1, ratio, ratio_1;
   for (int r = 0; r < repeat; ++r) {
+    ren_n.push_back(render_mrays(cores).first);
     raw_n.push_back(raw_embree_mrays(scene->embree_scene(), batch, cores));
+    ren_1.push_back(render_mrays(1).first);
     raw_1.push_back(raw_embree_mrays(scene->embree_scene(), batch, 1));
+    ratio.push_back(ren_n.back() / raw_n.back());
+    ratio_1.push_back(ren_1.back() / raw_1.back());
   }
-  const double raw = median(raw_n), raw1 = median(raw_1);
+  const double renderer_n = median(ren_n), renderer_1 = median(ren_1), raw = median(raw_n), raw1 = median(raw_1);
   const double bytes = double(st.geometry_bytes + st.embree_bytes);
   std::printf("scene                    %s\n", scene_path.empty() ? "<default scene>" : scene_path.c_str());
   std::printf("resolution, spp          %dx%d, %d spp, %d threads\n", w, h, spp, cores);
@@ -137,7 +135,8 @@ int main(int argc, char** argv) {
               st.geometry_bytes / 1048576.0, st.embree_bytes / 1048576.0);
   std::printf("renderer                 %.2f Mrays/s (%d threads), %.2f Mrays/s (1 thread)\n", renderer_n, cores, renderer_1);
   std::printf("raw rtcIntersect1        %.2f Mrays/s (%d threads), %.2f Mrays/s (1 thread)\n", raw, cores, raw1);
-  std::printf("renderer / raw Embree    %.2f\n", renderer_n / raw);
+  std::printf("renderer / raw Embree    %.2f (%d threads), %.2f (1 thread); medians of per-repetition ratios\n", median(ratio),
+              cores, median(ratio_1));
   std::printf("thread scaling 1 -> %d   renderer %.2fx, raw Embree %.2fx\n", cores, renderer_n / renderer_1, raw / raw1);
   if (!json_out.empty()) {
     nlohmann::json j = {{"scene", scene_path},
@@ -148,7 +147,8 @@ int main(int argc, char** argv) {
                         {"renderer_mrays_1thread", renderer_1},
                         {"raw_embree_mrays", raw},
                         {"raw_embree_mrays_1thread", raw1},
-                        {"ratio_renderer_over_raw", renderer_n / raw},
+                        {"ratio_renderer_over_raw", median(ratio)},
+                        {"ratio_renderer_over_raw_1thread", median(ratio_1)},
                         {"thread_scaling", renderer_n / renderer_1},
                         {"threads", cores}};
     std::ofstream(json_out) << j.dump(2) << "\n";

@@ -47,12 +47,13 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     ++*rays;
     if (!scene.intersect(ray, kInf, &hit)) {
       for (const Light* l : scene.infinite_lights()) {
-        const Color Le = l->Le(ray.d);
+        float dir_pdf = 0;
+        const Color Le = l->Le(ray.d, &dir_pdf);
         if ((Le <= 0.0f).all()) continue;
         if (specular) {
           L += beta * Le;
         } else {
-          const float light_pdf = scene.light_pmf(l) * l->pdf(ray.d);
+          const float light_pdf = scene.light_pmf(l) * dir_pdf;
           L += beta * Le * power_heuristic(prev_pdf, light_pdf);
         }
       }
@@ -176,8 +177,9 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
         Vec3f normal = Vec3f::Zero(), position = Vec3f::Zero();
         float depth = 0, coverage = 0;
         int object_id = 0;
+        const uint32_t pixel_seed = Sampler::hash_pixel(uint32_t(x), uint32_t(y), s.seed);
         for (int i = 0; i < s.spp; ++i) {
-          Sampler sampler(uint32_t(x), uint32_t(y), uint32_t(i), s.seed);
+          Sampler sampler(pixel_seed, uint32_t(i));
           const Vec4f cam = sampler.get4d();
           const Vec2f offset = filter.sample(Vec2f(cam[0], cam[1]));
           const Ray ray = camera.generate(Vec2f(x + 0.5f + offset.x(), y + 0.5f + offset.y()), Vec2f(cam[2], cam[3]));

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "renderer/fast_trig.h"
+
 namespace phellem {
 
 namespace {
@@ -43,9 +45,10 @@ Color EnvironmentMap::texel(int x, int y) const {
 }
 
 Vec2f EnvironmentMap::direction_to_uv(const Vec3f& d) {
-  float u = 0.5f + std::atan2(d.x(), -d.z()) / kTwoPi;
+  float u = 0.5f + fast_atan2(d.x(), -d.z()) * (0.5f * kInvPi);
   if (u >= 1.0f) u -= 1.0f;
-  const float v = std::acos(std::clamp(d.y(), -1.0f, 1.0f)) * kInvPi;
+  if (u < 0.0f) u = 0.0f;
+  const float v = fast_acos(std::clamp(d.y(), -1.0f, 1.0f)) * kInvPi;
   return Vec2f(u, v);
 }
 
@@ -64,15 +67,25 @@ Vec3f EnvironmentMap::to_world(const Vec3f& w) const {
 
 Color EnvironmentMap::Le(const Vec3f& dir) const { return bilinear(direction_to_uv(to_local(dir))) * intensity_; }
 
+Color EnvironmentMap::Le(const Vec3f& dir, float* pdf) const {
+  const Vec2f uv = direction_to_uv(to_local(dir));
+  const float sin_t = std::sqrt(std::max(0.0f, 1.0f - dir.y() * dir.y()));
+  *pdf = sin_t > 0 ? dist_.pdf(uv) / (2 * kPi * kPi * sin_t) : 0.0f;
+  return bilinear(uv) * intensity_;
+}
+
 Color EnvironmentMap::bilinear(const Vec2f& uv) const {
   // Bilinear lookup (the pdf stays piecewise constant; that is still unbiased).
   const float fx = uv.x() * w_ - 0.5f, fy = std::clamp(uv.y() * h_ - 0.5f, 0.0f, float(h_ - 1));
-  const int x0 = int(std::floor(fx)), y0 = std::min(int(fy), h_ - 1);
-  const float tx = fx - std::floor(fx), ty = fy - y0;
-  const int y1 = std::min(y0 + 1, h_ - 1);
-  auto wrap = [&](int x) { return ((x % w_) + w_) % w_; };
-  return (1 - ty) * ((1 - tx) * texel(wrap(x0), y0) + tx * texel(wrap(x0 + 1), y0)) +
-         ty * ((1 - tx) * texel(wrap(x0), y1) + tx * texel(wrap(x0 + 1), y1));
+  const float flx = std::floor(fx);
+  const int y0 = std::min(int(fy), h_ - 1), y1 = std::min(y0 + 1, h_ - 1);
+  const float tx = fx - flx, ty = fy - float(y0);
+  // uv.x ∈ [0, 1] puts x0 in [-1, w]: wrap with compares, not integer division.
+  int x0 = int(flx), x1 = x0 + 1;
+  if (x0 < 0) x0 += w_;
+  if (x0 >= w_) x0 -= w_;
+  if (x1 >= w_) x1 -= w_;
+  return (1 - ty) * ((1 - tx) * texel(x0, y0) + tx * texel(x1, y0)) + ty * ((1 - tx) * texel(x0, y1) + tx * texel(x1, y1));
 }
 
 std::optional<LightSample> EnvironmentMap::sample(const Vec3f&, const Vec2f& u) const {
@@ -91,7 +104,7 @@ std::optional<LightSample> EnvironmentMap::sample(const Vec3f&, const Vec2f& u) 
 
 float EnvironmentMap::pdf(const Vec3f& wi) const {
   const Vec2f uv = direction_to_uv(to_local(wi));
-  const float sin_t = std::sin(uv.y() * kPi);
+  const float sin_t = std::sqrt(std::max(0.0f, 1.0f - wi.y() * wi.y()));  // rotation is about +y
   if (sin_t <= 0) return 0;
   return dist_.pdf(uv) / (2 * kPi * kPi * sin_t);
 }

@@ -29,25 +29,37 @@ struct SobolMatrices {
     build(2, 2, 1, {1, 3});
     build(3, 3, 1, {1, 3, 1});
     // Byte tables: the product of a generator matrix with 8 bits of the index at a time.
+    // `reversed` works entirely in the bit-reversed domain (Burley 2020, sec. 3): input the
+    // reversed index, output the reversed Sobol value, which is what Owen scrambling needs.
     for (int d = 0; d < 4; ++d)
       for (int k = 0; k < 4; ++k)
         for (int b = 0; b < 256; ++b) {
-          uint32_t x = 0;
+          uint32_t x = 0, xr = 0;
           for (int bit = 0; bit < 8; ++bit)
-            if (b & (1 << bit)) x ^= v[d][8 * k + bit];
+            if (b & (1 << bit)) {
+              x ^= v[d][8 * k + bit];
+              xr ^= reverse(v[d][31 - (8 * k + bit)]);
+            }
           table[d][k][b] = x;
+          reversed[d][k][b] = xr;
         }
   }
-  std::array<std::array<std::array<uint32_t, 256>, 4>, 4> table;
+  static uint32_t reverse(uint32_t x) {
+    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+    return __builtin_bswap32(x);
+  }
+  std::array<std::array<std::array<uint32_t, 256>, 4>, 4> table, reversed;
 };
 const SobolMatrices kSobol;
 
-inline uint32_t reverse_bits(uint32_t x) {
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-  return (x >> 16) | (x << 16);
+inline uint32_t reverse_bits(uint32_t x) { return SobolMatrices::reverse(x); }
+
+// Reversed Sobol value of the point whose reversed index is r.
+inline uint32_t sobol_reversed(uint32_t r, int dim) {
+  const auto& t = kSobol.reversed[dim];
+  return t[0][r & 0xFF] ^ t[1][(r >> 8) & 0xFF] ^ t[2][(r >> 16) & 0xFF] ^ t[3][r >> 24];
 }
 
 // Laine & Karras 2011 style hash that only propagates bits upwards (Burley 2020, listing 2).
@@ -75,15 +87,21 @@ uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
 
 uint32_t Sampler::hash_pixel(uint32_t px, uint32_t py, uint32_t seed) { return hash_all(px, py, seed, 0x5eedu); }
 
+Sampler::Sampler(uint32_t pixel_seed, uint32_t sample_index)
+    : pixel_seed_(pixel_seed), reversed_index_(reverse_bits(sample_index)) {}
+
 Vec4f Sampler::get4d() {
   const uint32_t set_seed = hash_combine(pixel_seed_, dimension_set_++);
   // Shuffle the sample order per pixel and dimension set (Burley 2020, sec. 4), then
-  // Owen-scramble each dimension independently.
-  const uint32_t shuffled = nested_uniform_scramble(index_, set_seed);
+  // Owen-scramble each dimension independently:
+  //   x_d = nested_uniform_scramble(sobol(nested_uniform_scramble(index, s)), s_d).
+  // Both scrambles reverse, permute and reverse back; staying in the reversed domain between
+  // them leaves one reversal per dimension (tests/test_sampler.cpp checks the identity).
+  const uint32_t shuffled_reversed = laine_karras_permutation(reversed_index_, set_seed);
   Vec4f out;
   for (int d = 0; d < 4; ++d) {
-    const uint32_t x = nested_uniform_scramble(sobol_u32(shuffled, d), hash_combine(set_seed, uint32_t(d) + 1));
-    out[d] = std::min(u32_to_unit_float(x), kOneMinusEpsilon);
+    const uint32_t y = laine_karras_permutation(sobol_reversed(shuffled_reversed, d), hash_combine(set_seed, uint32_t(d) + 1));
+    out[d] = std::min(u32_to_unit_float(reverse_bits(y)), kOneMinusEpsilon);
   }
   return out;
 }

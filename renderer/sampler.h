@@ -12,7 +12,9 @@ namespace phellem {
 class Sampler {
  public:
   Sampler(uint32_t px, uint32_t py, uint32_t sample_index, uint32_t seed)
-      : pixel_seed_(hash_pixel(px, py, seed)), index_(sample_index) {}
+      : Sampler(hash_pixel(px, py, seed), sample_index) {}
+  // With the pixel's seed hashed once per pixel by the caller (hash_pixel).
+  Sampler(uint32_t pixel_seed, uint32_t sample_index);
 
   // Next 1D / 2D value; each call consumes one 4D Sobol "dimension set".
   float get1d();
@@ -24,7 +26,7 @@ class Sampler {
 
  private:
   uint32_t pixel_seed_;
-  uint32_t index_;
+  uint32_t reversed_index_;  // sample index with its bits reversed
   uint32_t dimension_set_ = 0;
 };
 

@@ -66,12 +66,21 @@ Distribution1D::Distribution1D(std::vector<float> f) : f_(std::move(f)) {
     for (size_t i = 1; i <= n; ++i) cdf_[i] = float(double(cdf_[i]) / acc);
   }
   cdf_[n] = 1.0f;
+  guide_.resize(n);
+  size_t i = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const float u = float(k) / float(n);
+    while (i + 1 < n && cdf_[i + 1] <= u) ++i;
+    guide_[k] = uint32_t(i);
+  }
 }
 
 size_t Distribution1D::discrete(float u, float* pmf_out) const {
-  auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-  size_t i = std::clamp<ptrdiff_t>((it - cdf_.begin()) - 1, 0, ptrdiff_t(f_.size()) - 1);
-  while (i + 1 < f_.size() && cdf_[i + 1] - cdf_[i] == 0.0f && u >= cdf_[i + 1]) ++i;
+  // The bin i with cdf[i] <= u < cdf[i+1]; empty bins (cdf[i] == cdf[i+1]) are never chosen.
+  const size_t n = f_.size();
+  size_t i = guide_[std::min(size_t(u * float(n)), n - 1)];
+  while (i > 0 && cdf_[i] > u) --i;  // u * n rounded up into the next guide cell
+  while (i + 1 < n && cdf_[i + 1] <= u) ++i;
   if (pmf_out) *pmf_out = cdf_[i + 1] - cdf_[i];
   return i;
 }
@@ -99,6 +108,12 @@ Distribution2D::Distribution2D(const std::vector<float>& f, int nu, int nv) : nu
     row_integral[v] = conditional_.back().integral();
   }
   marginal_ = Distribution1D(std::move(row_integral));
+  pdf_.resize(size_t(nu) * nv);
+  for (int v = 0; v < nv; ++v)
+    for (int u = 0; u < nu; ++u) {
+      const float pu = conditional_[v].pdf((u + 0.5f) / nu), pv = marginal_.pdf((v + 0.5f) / nv);
+      pdf_[size_t(v) * nu + u] = pu * pv;
+    }
 }
 
 Vec2f Distribution2D::sample(const Vec2f& u, float* pdf_out) const {
@@ -111,8 +126,8 @@ Vec2f Distribution2D::sample(const Vec2f& u, float* pdf_out) const {
 }
 
 float Distribution2D::pdf(const Vec2f& p) const {
-  const int row = std::clamp(int(p.y() * nv_), 0, nv_ - 1);
-  return marginal_.pdf(p.y()) * conditional_[row].pdf(p.x());
+  const int row = std::clamp(int(p.y() * nv_), 0, nv_ - 1), col = std::clamp(int(p.x() * nu_), 0, nu_ - 1);
+  return pdf_[size_t(row) * nu_ + col];
 }
 
 }  // namespace phellem

@@ -24,7 +24,10 @@ inline float power_heuristic(float f, float g) {
   return (f2 + g2) > 0.0f ? f2 / (f2 + g2) : 0.0f;
 }
 
-// Piecewise-constant 1D distribution on [0, 1).
+// Piecewise-constant 1D distribution on [0, 1), inverted through its cdf. A guide table
+// (Chen & Asau 1974, "On generating random variates from an empirical distribution") maps u
+// to the first bin that can hold it, so sampling costs O(1) on average instead of a binary
+// search, and the map u -> x stays the monotone inverse cdf (stratification survives).
 class Distribution1D {
  public:
   Distribution1D() = default;
@@ -39,6 +42,7 @@ class Distribution1D {
 
  private:
   std::vector<float> f_, cdf_;
+  std::vector<uint32_t> guide_;  // guide_[k] = bin holding u = k / guide_.size()
   float integral_ = 0;
 };
 
@@ -52,6 +56,7 @@ class Distribution2D {
 
  private:
   std::vector<Distribution1D> conditional_;
+  std::vector<float> pdf_;  // density of each cell, row-major (one load per pdf query)
   Distribution1D marginal_;
   int nu_ = 0, nv_ = 0;
 };
