@@ -19,6 +19,18 @@ static void BM_SamplerGet4D(benchmark::State& state) {
 }
 BENCHMARK(BM_SamplerGet4D);
 
+static void BM_SamplerGet4DSamePixel(benchmark::State& state) {
+  uint32_t i = 0;
+  const uint32_t seed = Sampler::hash_pixel(3, 4, 7);
+  for (auto _ : state) {
+    Sampler s(seed, i++);
+    benchmark::DoNotOptimize(s.get4d());
+    benchmark::DoNotOptimize(s.get4d());
+    benchmark::DoNotOptimize(s.get4d());
+  }
+}
+BENCHMARK(BM_SamplerGet4DSamePixel);
+
 static void BM_BarkSample(benchmark::State& state) {
   BSDF b;
   b.type = BSDF::Type::Bark;

@@ -6,15 +6,18 @@ namespace phellem {
 
 namespace {
 
-inline float schlick_scalar(float f0, float cos_t) {
+// Schlick's Fresnel from F0 at normal incidence to F90 at grazing (F90 < 1 lets a coat fade
+// out entirely, as glTF's KHR_materials_specular does).
+inline float schlick_scalar(float f0, float f90, float cos_t) {
   const float m = std::clamp(1.0f - cos_t, 0.0f, 1.0f);
-  return f0 + (1.0f - f0) * m * m * m * m * m;
+  return f0 + (f90 - f0) * m * m * m * m * m;
 }
 
 // Probability of sampling the bark coat rather than the base, from the coat's share of
 // the reflected energy at wo (any positive choice is unbiased).
 inline float bark_coat_probability(const BSDF& b, float cos_o) {
-  const float fo = schlick_scalar(b.f0, cos_o);
+  if (b.f90 <= 0.0f) return 0.0f;  // no coat (F0 ≤ F90 = 0): never sample it
+  const float fo = schlick_scalar(b.f0, b.f90, cos_o);
   const float base = (1.0f - fo) * std::max(0.02f, luminance(b.base));
   return std::clamp(fo / (fo + base), 0.1f, 0.9f);
 }
@@ -65,9 +68,9 @@ Color BSDF::eval(const Vec3f& wo, const Vec3f& wi) const {
       if (wo.z() <= 0 || wi.z() <= 0) return Color::Zero();
       const GGX ggx(alpha);
       const Vec3f wm = (wo + wi).normalized();
-      const float F = schlick_scalar(f0, wo.dot(wm));
+      const float F = schlick_scalar(f0, f90, wo.dot(wm));
       const float coat = ggx.D(wm) * ggx.G(wo, wi) * F / (4 * wo.z() * wi.z());
-      const float t = (1 - schlick_scalar(f0, wo.z())) * (1 - schlick_scalar(f0, wi.z()));
+      const float t = (1 - schlick_scalar(f0, f90, wo.z())) * (1 - schlick_scalar(f0, f90, wi.z()));
       return base * (kInvPi * t) + coat;
     }
     case Type::Conductor: {

@@ -28,6 +28,7 @@ struct BSDF {
   Color base{0.8f, 0.8f, 0.8f};  // albedo of the diffuse part / F0 of conductors
   float alpha = 0.25f;           // GGX roughness (α = roughness²)
   float f0 = 0.04f;              // bark coat reflectance at normal incidence
+  float f90 = 1.0f;              // bark coat reflectance at grazing incidence
   float eta = 1.5f;              // dielectric: interior / exterior
 
   bool is_delta() const {

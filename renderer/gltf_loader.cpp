@@ -158,6 +158,20 @@ MaterialDesc convert_material(const tinygltf::Model& m, int index, const std::st
     d.base_color = Color(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]), float(pbr.baseColorFactor[2])).max(0.0f).min(1.0f);
   d.roughness = float(std::clamp(pbr.roughnessFactor, 0.0, 1.0));
   d.type = pbr.metallicFactor >= 0.5 ? MaterialType::Conductor : MaterialType::Bark;
+  // KHR_materials_specular: F0 = 0.04 × specularFactor × specularColorFactor for the default
+  // IOR 1.5; our bark/dielectric-base layer has F0 = 0.08 × specular.
+  if (auto it = g.extensions.find("KHR_materials_specular"); it != g.extensions.end()) {
+    double factor = 1.0, color = 1.0;
+    if (it->second.Has("specularFactor")) factor = it->second.Get("specularFactor").GetNumberAsDouble();
+    if (it->second.Has("specularColorFactor")) {
+      const auto& c = it->second.Get("specularColorFactor");
+      color = 0;
+      for (size_t k = 0; k < std::min<size_t>(3, c.ArrayLen()); ++k) color = std::max(color, c.Get(int(k)).GetNumberAsDouble());
+    }
+    if (!std::isfinite(factor) || !std::isfinite(color) || factor < 0 || color < 0)
+      throw UserError(path, where + ".extensions.KHR_materials_specular", "specular factors must be finite and non-negative");
+    d.specular = float(std::min(1.0, 0.5 * factor * color));
+  }
   if (pbr.baseColorTexture.index >= 0) {
     d.base_color_texture.file = image_file(m, pbr.baseColorTexture.index, path, where + ".pbrMetallicRoughness.baseColorTexture");
     d.base_color_texture.srgb = true;

@@ -8,6 +8,7 @@ Material compile_material(const MaterialDesc& d, TextureStore& textures) {
   m.base = d.base_color;
   m.roughness = d.roughness;
   m.f0 = 0.08f * d.specular;
+  m.f90 = std::min(1.0f, 2.0f * d.specular);  // specular 0: no coat at all, even at grazing angles
   m.ior = d.ior;
   if (d.type == MaterialType::Emissive) m.emission = d.emission * d.strength;
   m.base_tex = textures.add(d.base_color_texture, {d.where.file, d.where.path + "/base_color_texture"});
@@ -27,7 +28,7 @@ BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInpu
   b.alpha = rough * rough;
   switch (m.type) {
     case MaterialType::Diffuse: b.type = BSDF::Type::Diffuse; break;
-    case MaterialType::Bark: b.type = BSDF::Type::Bark; b.f0 = m.f0; break;
+    case MaterialType::Bark: b.type = BSDF::Type::Bark; b.f0 = m.f0; b.f90 = m.f90; break;
     case MaterialType::Conductor: b.type = BSDF::Type::Conductor; break;
     case MaterialType::Dielectric: b.type = BSDF::Type::Dielectric; b.eta = m.ior; break;
     case MaterialType::Emissive: b.type = BSDF::Type::Black; base = Color::Zero(); break;

@@ -12,7 +12,7 @@ struct Material {
   Color base{0.8f, 0.8f, 0.8f};
   int base_tex = -1, rough_tex = -1, normal_tex = -1;
   float roughness = 0.5f;
-  float f0 = 0.04f;
+  float f0 = 0.04f, f90 = 1.0f;
   float ior = 1.5f;
   Color emission = Color::Zero();  // radiance of emissive materials
   bool emissive() const { return type == MaterialType::Emissive; }

@@ -115,6 +115,31 @@ TEST(BSDF, EnergyNeverExceedsOne) {
   }
 }
 
+// Bark with specular 0 (F0 = F90 = 0) must be exactly Lambertian: no grazing coat, no
+// darkening of the base by (1 − F) — the glTF KHR_materials_specular specularFactor 0 case.
+TEST(BSDF, BarkWithoutSpecularIsLambertian) {
+  BSDF b;
+  b.type = BSDF::Type::Bark;
+  b.base = Color(0.6f, 0.4f, 0.2f);
+  b.alpha = 0.3f;
+  b.f0 = 0.0f;
+  b.f90 = 0.0f;
+  for (float co : {1.0f, 0.7f, 0.2f, 0.02f})
+    for (float ci : {1.0f, 0.5f, 0.05f}) {
+      const Vec3f wo(std::sqrt(1 - co * co), 0, co), wi(-0.3f * std::sqrt(1 - ci * ci), 0.95f * std::sqrt(1 - ci * ci), ci);
+      const Vec3f win = wi.normalized();
+      const Color f = b.eval(wo, win);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[c], b.base[c] * kInvPi, 1e-6f) << "cos_o " << co << " cos_i " << ci;
+      EXPECT_NEAR(b.pdf(wo, win), win.z() * kInvPi, 1e-6f);
+    }
+  // With the default specular 0.5 (F0 0.04, F90 1) grazing light is partly reflected by the coat.
+  b.f0 = 0.04f;
+  b.f90 = 1.0f;
+  const Vec3f wo(std::sqrt(1 - 0.05f * 0.05f), 0, 0.05f), wi(-std::sqrt(1 - 0.05f * 0.05f), 0, 0.05f);
+  EXPECT_LT(b.eval(wo, Vec3f(0, 0, 1))[0], b.base[0] * kInvPi * 0.9f);
+  EXPECT_GT(b.eval(wo, wi)[0], 0.0f);
+}
+
 TEST(BSDF, SmoothDielectricSplitsByFresnel) {
   BSDF g;
   g.type = BSDF::Type::Dielectric;

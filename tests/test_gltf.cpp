@@ -142,6 +142,24 @@ TEST(Gltf, NodeTransformsPrimitivesAndMaterials) {
   EXPECT_NEAR(m.meshes[0].uvs[0].y(), 0.0f, 1e-6f);
 }
 
+TEST(Gltf, SpecularExtensionSetsTheCoatStrength) {
+  const std::string dir = test::temp_dir("gltf_specular");
+  write_png_texture(dir + "/tex.png");
+  TestGltf g = make_gltf("tex.png");
+  EXPECT_FLOAT_EQ(load_gltf(write_gltf(dir, g)).materials[0].specular, 0.5f);  // glTF default F0 0.04
+  g.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularFactor", 0.0}}}};
+  EXPECT_FLOAT_EQ(load_gltf(write_gltf(dir, g)).materials[0].specular, 0.0f);  // pure Lambert
+  g.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {0.2, 0.8, 0.4}}}}};
+  EXPECT_FLOAT_EQ(load_gltf(write_gltf(dir, g)).materials[0].specular, 0.2f);
+  g.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularFactor", -1.0}}}};
+  try {
+    load_gltf(write_gltf(dir, g));
+    FAIL() << "negative specularFactor accepted";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("materials[0].extensions.KHR_materials_specular"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Gltf, BinaryGlbLoadsTheSame) {
   const std::string dir = test::temp_dir("glb_ok");
   TestGltf g = make_gltf("tex.png");
