@@ -1,7 +1,8 @@
-// Inverse trigonometric functions for the hot paths (environment lookups), as polynomials
-// from Abramowitz & Stegun 1964 with |error| ≤ 2e-8 rad before float rounding; libm's
-// correctly rounded versions cost several times more. tests/test_fast_trig.cpp checks them
-// against std:: over their whole domain.
+// Trigonometric functions for the hot paths (direction sampling, environment lookups) as
+// polynomials: inverse functions from Abramowitz & Stegun 1964 (|error| ≤ 2e-8 rad before
+// float rounding), sin/cos by quadrant reduction and Taylor series on [-π/4, π/4] (error
+// below float rounding). libm's correctly rounded versions cost several times more.
+// tests/test_fast_trig.cpp checks them against std:: over their whole domain.
 #pragma once
 
 #include <cmath>
@@ -30,6 +31,22 @@ inline float fast_atan2(float y, float x) {
   if (ay > ax) r = 0.5f * kPi - r;
   if (x < 0) r = kPi - r;
   return std::copysign(r, y);
+}
+
+// sin(x) and cos(x) together, for |x| up to a few thousand radians.
+inline void fast_sincos(float x, float* sin_out, float* cos_out) {
+  const float q = std::nearbyint(x * (2.0f * kInvPi));  // quadrant
+  // r = x − q·π/2 in two steps (Cody–Waite) to keep the reduction exact enough.
+  const float r = (x - q * 1.5703125f) - q * 4.8382679e-4f;
+  const float r2 = r * r;
+  const float s = r * (1.0f + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
+  const float c = 1.0f + r2 * (-0.5f + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320 + r2 * (-1.0f / 3628800)))));
+  switch (int(q) & 3) {
+    case 0: *sin_out = s; *cos_out = c; break;
+    case 1: *sin_out = c; *cos_out = -s; break;
+    case 2: *sin_out = -s; *cos_out = -c; break;
+    default: *sin_out = -c; *cos_out = s; break;
+  }
 }
 
 }  // namespace phellem

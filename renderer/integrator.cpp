@@ -47,15 +47,10 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     ++*rays;
     if (!scene.intersect(ray, kInf, &hit)) {
       for (const Light* l : scene.infinite_lights()) {
-        float dir_pdf = 0;
-        const Color Le = l->Le(ray.d, &dir_pdf);
+        float light_pdf = 0;
+        const Color Le = l->Le(ray.d, &light_pdf);
         if ((Le <= 0.0f).all()) continue;
-        if (specular) {
-          L += beta * Le;
-        } else {
-          const float light_pdf = scene.light_pmf(l) * dir_pdf;
-          L += beta * Le * power_heuristic(prev_pdf, light_pdf);
-        }
+        L += beta * Le * (specular ? 1.0f : power_heuristic(prev_pdf, light_pdf));
       }
       break;
     }
@@ -64,7 +59,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     // Texture filter width: the pixel's footprint at the hit (a ray cone, widened after
     // the first bounce where the lobe spreads the cone).
     const float cone = pixel_angle * (depth == 0 ? 1.0f : 8.0f);
-    const ShadingInput in{hit.uv, hit.t * cone * hit.uv_per_metre};
+    const ShadingInput in{hit.uv, hit.t * cone * hit.uv_per_metre, depth == 0};
     if (depth == 0) {
       first->hit = true;
       first->position = hit.p;
@@ -76,7 +71,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
       if (specular) {
         L += beta * mat.emission;
       } else if (scene.area_lights() && hit.area_light >= 0) {
-        const float light_pdf = scene.light_pmf(scene.area_lights()) * scene.area_lights()->pdf_hit(size_t(hit.area_light), prev_p, hit.p, ray.d);
+        const float light_pdf = scene.area_lights()->pdf_hit(size_t(hit.area_light), prev_p, hit.p, ray.d);
         L += beta * mat.emission * power_heuristic(prev_pdf, light_pdf);
       }
       if (depth == 0) {
@@ -105,31 +100,27 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     const Vec3f wo_l = frame.to_local(wo);
     if (wo_l.z() == 0) break;
 
-    // Next-event estimation.
-    const Vec4f ul = sampler.get4d();
+    // Next-event estimation: one sample of every light (the scene has a handful of light
+    // objects — each sun, sky and environment, plus all emissive triangles as one light that
+    // picks a triangle by power), so no light-selection noise.
     if (!bsdf.is_delta()) {
-      float pmf = 0;
-      const Light* light = scene.pick_light(ul[0], &pmf);
-      if (light && pmf > 0) {
-        if (auto ls = light->sample(hit.p, Vec2f(ul[1], ul[2])); ls && (ls->delta || ls->pdf > 0) && (ls->L > 0.0f).any()) {
-          const Vec3f wi_l = frame.to_local(ls->wi);
-          if (geometrically_consistent(wo, ls->wi, ng, wo_l.z(), wi_l.z())) {
-            const Color f = bsdf.eval(wo_l, wi_l) * std::abs(wi_l.z());
-            if ((f > 0.0f).any()) {
-              const Vec3f o = offset_ray_origin(hit.p, ng, ls->wi);
-              const float tmax = std::isinf(ls->dist) ? kInf : ls->dist * (1.0f - 1e-3f);
-              ++*rays;
-              if (!scene.occluded(o, ls->wi, tmax)) {
-                if (ls->delta) {
-                  L += beta * f * ls->L / pmf;
-                } else {
-                  const float lp = pmf * ls->pdf;
-                  const float w = power_heuristic(lp, bsdf.pdf(wo_l, wi_l));
-                  L += beta * f * ls->L * (w / lp);
-                }
-              }
-            }
-          }
+      for (const auto& light : scene.lights()) {
+        const Vec4f ul = sampler.get4d();
+        const auto ls = light->sample(hit.p, Vec2f(ul[0], ul[1]));
+        if (!ls || !(ls->delta || ls->pdf > 0) || !(ls->L > 0.0f).any()) continue;
+        const Vec3f wi_l = frame.to_local(ls->wi);
+        if (!geometrically_consistent(wo, ls->wi, ng, wo_l.z(), wi_l.z())) continue;
+        const Color f = bsdf.eval(wo_l, wi_l) * std::abs(wi_l.z());
+        if (!(f > 0.0f).any()) continue;
+        const Vec3f o = offset_ray_origin(hit.p, ng, ls->wi);
+        const float tmax = std::isinf(ls->dist) ? kInf : ls->dist * (1.0f - 1e-3f);
+        ++*rays;
+        if (scene.occluded(o, ls->wi, tmax)) continue;
+        if (ls->delta) {
+          L += beta * f * ls->L;
+        } else {
+          const float w = power_heuristic(ls->pdf, bsdf.pdf(wo_l, wi_l));
+          L += beta * f * ls->L * (w / ls->pdf);
         }
       }
     }

@@ -53,9 +53,10 @@ Vec2f EnvironmentMap::direction_to_uv(const Vec3f& d) {
 }
 
 Vec3f EnvironmentMap::uv_to_direction(const Vec2f& uv) {
-  const float phi = (uv.x() - 0.5f) * kTwoPi, theta = uv.y() * kPi;
-  const float st = std::sin(theta);
-  return Vec3f(st * std::sin(phi), std::cos(theta), -st * std::cos(phi));
+  float sp, cp, st, ct;
+  fast_sincos((uv.x() - 0.5f) * kTwoPi, &sp, &cp);
+  fast_sincos(uv.y() * kPi, &st, &ct);
+  return Vec3f(st * sp, ct, -st * cp);
 }
 
 Vec3f EnvironmentMap::to_local(const Vec3f& w) const {
@@ -92,10 +93,10 @@ std::optional<LightSample> EnvironmentMap::sample(const Vec3f&, const Vec2f& u) 
   float pdf_uv;
   const Vec2f uv = dist_.sample(u, &pdf_uv);
   if (pdf_uv <= 0) return std::nullopt;
-  const float sin_t = std::sin(uv.y() * kPi);
-  if (sin_t <= 0) return std::nullopt;
   LightSample s;
   s.wi = to_world(uv_to_direction(uv));
+  const float sin_t = std::sqrt(std::max(0.0f, 1.0f - s.wi.y() * s.wi.y()));  // rotation is about +y
+  if (sin_t <= 0) return std::nullopt;
   s.pdf = pdf_uv / (2 * kPi * kPi * sin_t);
   s.L = bilinear(uv) * intensity_;  // the same radiance function as Le(): MIS stays consistent
   s.dist = kInf;
@@ -212,7 +213,6 @@ AreaLights::AreaLights(std::vector<Triangle> tris) : tris_(std::move(tris)) {
     const auto& t = tris_[i];
     area_.push_back(0.5f * (t.p1 - t.p0).cross(t.p2 - t.p0).norm());
     w[i] = area_[i] * luminance(t.L);
-    total_power_ += kPi * w[i] * 2;  // two-sided emitters
   }
   if (!w.empty()) dist_ = Distribution1D(std::move(w));
 }

@@ -33,8 +33,6 @@ class Light {
     *pdf_out = pdf(dir);
     return Le(dir);
   }
-  // Emitted power estimate for light selection; scene_radius bounds the scene.
-  virtual float power(float scene_radius) const = 0;
 };
 
 // Uniform environment: radiance `L` from every direction.
@@ -45,7 +43,6 @@ class UniformEnvironment final : public Light {
   std::optional<LightSample> sample(const Vec3f& p, const Vec2f& u) const override;
   float pdf(const Vec3f&) const override { return 1.0f / (4 * kPi); }
   Color Le(const Vec3f&) const override { return L_; }
-  float power(float r) const override { return kPi * r * r * 4 * kPi * luminance(L_); }
 
  private:
   Color L_;
@@ -62,7 +59,6 @@ class EnvironmentMap final : public Light {
   float pdf(const Vec3f& wi) const override;
   Color Le(const Vec3f& dir) const override;
   Color Le(const Vec3f& dir, float* pdf_out) const override;
-  float power(float r) const override { return kPi * r * r * 4 * kPi * average_; }
 
   static Vec2f direction_to_uv(const Vec3f& d);
   static Vec3f uv_to_direction(const Vec2f& uv);
@@ -89,7 +85,6 @@ class SunLight final : public Light {
   std::optional<LightSample> sample(const Vec3f& p, const Vec2f& u) const override;
   float pdf(const Vec3f& wi) const override;
   Color Le(const Vec3f& dir) const override;
-  float power(float r) const override { return kPi * r * r * luminance(E_); }
   bool is_delta() const { return cos_max_ >= 1.0f; }
 
  private:
@@ -121,14 +116,12 @@ class AreaLights final : public Light {
   std::optional<LightSample> sample(const Vec3f& p, const Vec2f& u) const override;
   // pdf of reaching triangle `index` at point `hit` from p along wi.
   float pdf_hit(size_t index, const Vec3f& p, const Vec3f& hit, const Vec3f& wi) const;
-  float power(float) const override { return total_power_; }
   size_t size() const { return tris_.size(); }
 
  private:
   std::vector<Triangle> tris_;
   std::vector<float> area_;
   Distribution1D dist_;
-  float total_power_ = 0;
 };
 
 }  // namespace phellem

@@ -22,7 +22,8 @@ Material compile_material(const MaterialDesc& d, TextureStore& textures);
 
 struct ShadingInput {
   Vec2f uv;
-  float footprint;  // texture filter width in uv units
+  float footprint;       // texture filter width in uv units
+  bool primary = true;   // camera-ray hit: full-quality (bicubic) texture filtering
 };
 
 BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInput& in, Color* albedo);

@@ -381,25 +381,8 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     area_ = area.get();
     lights_.push_back(std::move(area));
   }
-  std::vector<float> power;
-  for (const auto& l : lights_) {
+  for (const auto& l : lights_)
     if (l->infinite()) infinite_.push_back(l.get());
-    power.push_back(std::max(0.0f, l->power(radius_)));
-  }
-  if (!power.empty()) light_dist_ = Distribution1D(power);
-  for (size_t i = 0; i < lights_.size(); ++i) light_pmf_.push_back(light_dist_.pmf(i));
-}
-
-const Light* RenderScene::pick_light(float u, float* pmf) const {
-  if (lights_.empty()) return nullptr;
-  const size_t i = light_dist_.discrete(u, pmf);
-  return lights_[i].get();
-}
-
-float RenderScene::light_pmf(const Light* l) const {
-  for (size_t i = 0; i < lights_.size(); ++i)
-    if (lights_[i].get() == l) return light_pmf_[i];
-  return 0;
 }
 
 bool RenderScene::intersect(const Ray& ray, float tmax, SurfaceHit* hit) const {

@@ -91,8 +91,6 @@ class RenderScene {
   const std::vector<const Light*>& infinite_lights() const { return infinite_; }
   const AreaLights* area_lights() const { return area_; }
   // Light selection ∝ power; returns the chosen light and its probability.
-  const Light* pick_light(float u, float* pmf) const;
-  float light_pmf(const Light* l) const;
   const GeometryStats& stats() const { return stats_; }
   float scene_radius() const { return radius_; }
   RTCScene embree_scene() const { return scene_.get(); }
@@ -114,8 +112,6 @@ class RenderScene {
   std::vector<std::unique_ptr<Light>> lights_;
   std::vector<const Light*> infinite_;
   AreaLights* area_ = nullptr;
-  Distribution1D light_dist_;
-  std::vector<float> light_pmf_;
   GeometryStats stats_;
   float radius_ = 1;
   std::shared_ptr<std::atomic<long long>> embree_bytes_now_, embree_bytes_peak_;

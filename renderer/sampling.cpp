@@ -2,6 +2,8 @@
 
 #include <numeric>
 
+#include "renderer/fast_trig.h"
+
 namespace phellem {
 
 Vec2f sample_concentric_disk(const Vec2f& u) {
@@ -16,7 +18,9 @@ Vec2f sample_concentric_disk(const Vec2f& u) {
     r = o.y();
     theta = kPi / 2 - (kPi / 4) * (o.x() / o.y());
   }
-  return r * Vec2f(std::cos(theta), std::sin(theta));
+  float s, c;
+  fast_sincos(theta, &s, &c);
+  return r * Vec2f(c, s);
 }
 
 Vec3f sample_cosine_hemisphere(const Vec2f& u) {
@@ -27,15 +31,17 @@ Vec3f sample_cosine_hemisphere(const Vec2f& u) {
 Vec3f sample_uniform_cone(const Vec2f& u, float cos_max) {
   const float cos_t = (1.0f - u.x()) + u.x() * cos_max;
   const float sin_t = safe_sqrt(1.0f - cos_t * cos_t);
-  const float phi = kTwoPi * u.y();
-  return Vec3f(std::cos(phi) * sin_t, std::sin(phi) * sin_t, cos_t);
+  float s, c;
+  fast_sincos(kTwoPi * u.y(), &s, &c);
+  return Vec3f(c * sin_t, s * sin_t, cos_t);
 }
 
 Vec3f sample_uniform_sphere(const Vec2f& u) {
   const float z = 1.0f - 2.0f * u.x();
   const float r = safe_sqrt(1.0f - z * z);
-  const float phi = kTwoPi * u.y();
-  return Vec3f(r * std::cos(phi), r * std::sin(phi), z);
+  float s, c;
+  fast_sincos(kTwoPi * u.y(), &s, &c);
+  return Vec3f(r * c, r * s, z);
 }
 
 Vec2f sample_uniform_triangle(const Vec2f& u) {

@@ -139,12 +139,13 @@ int TextureStore::add(const TextureDesc& desc, const Location& where) {
   return int(impl_->entries.size() - 1);
 }
 
-Color TextureStore::rgb(int handle, const Vec2f& uv, float footprint) const {
+Color TextureStore::rgb(int handle, const Vec2f& uv, float footprint, bool primary) const {
   const Entry& e = impl_->entries[handle];
   const Vec2f st(uv.x() * e.desc.scale.x(), uv.y() * e.desc.scale.y());
   if (!e.handle) return procedural_bark(e.desc, uv);
   OIIO::TextureOpt opt;
   opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
+  if (!primary) opt.interpmode = OIIO::TextureOpt::InterpBilinear;
   float out[4] = {0, 0, 0, 0};
   const float fw = footprint * std::max(e.desc.scale.x(), e.desc.scale.y());
   const int nc = std::min(3, e.channels);
@@ -154,11 +155,12 @@ Color TextureStore::rgb(int handle, const Vec2f& uv, float footprint) const {
   return Color(out[0], out[1], out[2]);
 }
 
-float TextureStore::scalar(int handle, const Vec2f& uv, float footprint) const {
+float TextureStore::scalar(int handle, const Vec2f& uv, float footprint, bool primary) const {
   const Entry& e = impl_->entries[handle];
   if (!e.handle) return luminance(procedural_bark(e.desc, uv));
   OIIO::TextureOpt opt;
   opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
+  if (!primary) opt.interpmode = OIIO::TextureOpt::InterpBilinear;
   const Vec2f st(uv.x() * e.desc.scale.x(), uv.y() * e.desc.scale.y());
   const float fw = footprint * std::max(e.desc.scale.x(), e.desc.scale.y());
   float out = 0;

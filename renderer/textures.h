@@ -26,8 +26,10 @@ class TextureStore {
   int add(const TextureDesc& desc, const Location& where);
 
   // uv with v up (origin bottom-left); `footprint` is the filter width in uv units.
-  Color rgb(int handle, const Vec2f& uv, float footprint) const;
-  float scalar(int handle, const Vec2f& uv, float footprint) const;
+  // `primary` lookups (seen directly by the camera) interpolate bicubically within a mip
+  // level; secondary ones, whose result is averaged over a bounce, bilinearly (cheaper).
+  Color rgb(int handle, const Vec2f& uv, float footprint, bool primary = true) const;
+  float scalar(int handle, const Vec2f& uv, float footprint, bool primary = true) const;
 
   size_t memory_bytes() const;
 

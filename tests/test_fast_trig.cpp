@@ -35,5 +35,20 @@ TEST(FastTrig, Atan2WithinOneMicroradianInEveryOctant) {
   EXPECT_NEAR(fast_atan2(-1.0f, 0.0f), -0.5f * kPi, 1e-7f);
 }
 
+TEST(FastTrig, SinCosWithinFloatRounding) {
+  float worst = 0;
+  for (int i = 0; i <= 400000; ++i) {
+    const float x = -4.0f * kPi + 8.0f * kPi * float(i) / 400000.0f;
+    float s, c;
+    fast_sincos(x, &s, &c);
+    worst = std::max({worst, std::abs(s - std::sin(x)), std::abs(c - std::cos(x))});
+  }
+  EXPECT_LT(worst, 5e-7f);
+  float s, c;
+  fast_sincos(0.0f, &s, &c);
+  EXPECT_EQ(s, 0.0f);
+  EXPECT_EQ(c, 1.0f);
+}
+
 }  // namespace
 }  // namespace phellem
