@@ -104,9 +104,14 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     // objects — each sun, sky and environment, plus all emissive triangles as one light that
     // picks a triangle by power), so no light-selection noise.
     if (!bsdf.is_delta()) {
-      for (const auto& light : scene.lights()) {
-        const Vec4f ul = sampler.get4d();
-        const auto ls = light->sample(hit.p, Vec2f(ul[0], ul[1]));
+      const auto& lights = scene.lights();
+      Vec4f ul = Vec4f::Zero();
+      for (size_t li = 0; li < lights.size(); ++li) {
+        // Two lights share one 4D point: dimensions 0–1, then 2–3.
+        if (li % 2 == 0) ul = sampler.get4d();
+        const Vec2f u = li % 2 == 0 ? Vec2f(ul[0], ul[1]) : Vec2f(ul[2], ul[3]);
+        const Light* light = lights[li].get();
+        const auto ls = light->sample(hit.p, u);
         if (!ls || !(ls->delta || ls->pdf > 0) || !(ls->L > 0.0f).any()) continue;
         const Vec3f wi_l = frame.to_local(ls->wi);
         if (!geometrically_consistent(wo, ls->wi, ng, wo_l.z(), wi_l.z())) continue;
