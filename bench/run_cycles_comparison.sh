@@ -6,19 +6,23 @@
 #
 # Needs Debian's `blender` and `python3-numpy` (benchmark-only dependencies:
 #   sudo apt-get install blender python3-numpy). Environment knobs: THREADS (2),
-#   REF_SPP (2048, the "converged" images), SWEEP ("4 8 16 32 64 128").
+#   REF_SPP (2048, the "converged" images; REUSE_REF=1 keeps those of an earlier run), SWEEP ("4 8 16 32 64 128"), REPEAT (3 timed
+#   renders per sweep point, median taken; the machine is noisy).
 # Reports
 #   (a) agreement: relative L1 difference Σ|P − C| / Σ|C| of the two converged images;
 #   (b) equal-quality speed: each renderer's RMSE against its own converged image at each
 #       spp with its wall time (Phellem: load + build + render from --stats; Cycles: the
-#       render call, scene sync + BVH + render, timed inside Blender), and the time each
-#       needs to reach a common RMSE (log-log interpolation between sweep points).
+#       render call, scene sync + BVH + render, timed inside Blender), the time each needs
+#       to reach a common RMSE (log-log interpolation between sweep points), and the median
+#       over the sweep of the efficiency ratio (RMSE² × time of Cycles) / (same of Phellem),
+#       i.e. how many times longer Cycles takes to reach any given RMSE.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 OUT=${1:-build/cycles_comparison}
 THREADS=${THREADS:-2}
 REF_SPP=${REF_SPP:-2048}
 SWEEP=${SWEEP:-"4 8 16 32 64 128"}
+REPEAT=${REPEAT:-3}
 SCENE=bench/scenes/cycles/scene.json
 PHELLEM=./build/phellem
 COMPARE=./build/bench/phellem_bench_compare
@@ -40,17 +44,22 @@ echo "warm-up (texture cache, Blender start-up)"
 phellem 1 "$OUT/warm_phellem.exr" > /dev/null
 cycles 1 "$OUT/warm_cycles.exr" > /dev/null
 
-echo "converged images at $REF_SPP spp ($THREADS threads)"
-tp=$(phellem "$REF_SPP" "$OUT/phellem_ref.exr")
-tc=$(cycles "$REF_SPP" "$OUT/cycles_ref.exr")
-echo "  phellem ${tp} s, cycles ${tc} s"
+if [[ ${REUSE_REF:-0} == 1 && -f $OUT/phellem_ref.exr && -f $OUT/cycles_ref.exr ]]; then
+  echo "reusing the converged images in $OUT (REUSE_REF=1)"
+else
+  echo "converged images at $REF_SPP spp ($THREADS threads)"
+  tp=$(phellem "$REF_SPP" "$OUT/phellem_ref.exr")
+  tc=$(cycles "$REF_SPP" "$OUT/cycles_ref.exr")
+  echo "  phellem ${tp} s, cycles ${tc} s"
+fi
 agreement=$("$COMPARE" "$OUT/phellem_ref.exr" "$OUT/cycles_ref.exr")
 echo "agreement (a = Phellem, b = Cycles): $agreement"
 
 : > "$OUT/sweep.tsv"
+median() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 for spp in $SWEEP; do
-  tp=$(phellem "$spp" "$OUT/phellem_$spp.exr")
-  tc=$(cycles "$spp" "$OUT/cycles_$spp.exr")
+  tp=$(for r in $(seq "$REPEAT"); do phellem "$spp" "$OUT/phellem_$spp.exr"; done | median)
+  tc=$(for r in $(seq "$REPEAT"); do cycles "$spp" "$OUT/cycles_$spp.exr"; done | median)
   ep=$("$COMPARE" "$OUT/phellem_$spp.exr" "$OUT/phellem_ref.exr")
   ec=$("$COMPARE" "$OUT/cycles_$spp.exr" "$OUT/cycles_ref.exr")
   printf '%s\t%s\t%s\t%s\t%s\n' "$spp" "$tp" "$ep" "$tc" "$ec" >> "$OUT/sweep.tsv"
@@ -79,10 +88,13 @@ c = [(r[3], r[4]) for r in rows]
 # Common target: the RMSE Cycles reaches at the middle of the sweep.
 target = rows[len(rows) // 2][4]
 tp, tc = time_to(target, p), time_to(target, c)
+eff = sorted((r[4] ** 2 * r[3]) / (r[2] ** 2 * r[1]) for r in rows)
 a = json.loads(sys.argv[2])
 print("\nagreement: relative L1 difference %.4f (mean Phellem %.5f, mean Cycles %.5f)" % (a["rel_l1"], a["mean_a"], a["mean_b"]))
 if tp and tc:
     print("equal quality (RMSE %.5f): Phellem %.3f s, Cycles %.3f s, Cycles/Phellem time ratio %.2f" % (target, tp, tc, tc / tp))
 else:
     print("equal quality: target RMSE %.5f outside one renderer's sweep; widen SWEEP" % target)
+print("efficiency ratio (RMSE^2 x time, Cycles / Phellem), median over the sweep: %.2f (range %.2f-%.2f)"
+      % (eff[len(eff) // 2], eff[0], eff[-1]))
 PY
