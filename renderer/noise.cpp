@@ -54,4 +54,18 @@ float fbm(const Vec3f& p, uint32_t seed, int octaves, float gain) {
   return sum / norm;
 }
 
+float fbm_filtered(const Vec3f& p, uint32_t seed, int octaves, float footprint, float gain) {
+  float sum = 0, amp = 1, norm = 0;
+  Vec3f q = p;
+  for (int i = 0; i < octaves; ++i) {
+    const float w = band_weight(footprint);
+    if (w > 0) sum += w * amp * gradient_noise(q, hash_combine(seed, uint32_t(i)));
+    norm += amp;
+    amp *= gain;
+    q *= 2.03f;
+    footprint *= 2.03f;
+  }
+  return sum / norm;
+}
+
 }  // namespace phellem

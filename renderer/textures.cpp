@@ -94,13 +94,19 @@ std::string make_tx(const TextureDesc& d, const Location& where) {
   return out.string();
 }
 
-// Procedural bark: elongated noise streaks with dark fissures, periodic in u with period 1.
-Color procedural_bark(const TextureDesc& d, const Vec2f& uv) {
+// Procedural bark: elongated noise streaks with dark fissures, periodic in u with period 1,
+// band-limited to the lookup's footprint (uv units) like a mip-mapped image.
+Color procedural_bark(const TextureDesc& d, const Vec2f& uv, float footprint) {
   const float a = kTwoPi * uv.x() * d.scale.x() / std::max(1.0f, std::round(d.scale.x()));
   const float ring = std::max(1.0f, std::round(d.scale.x())) / kTwoPi;
   const Vec3f q(std::cos(a) * ring * 3.0f, std::sin(a) * ring * 3.0f, uv.y() * d.scale.y());
-  const float streak = fbm(Vec3f(q.x(), q.y(), q.z() * 0.25f), 11, 3);
-  const float fleck = gradient_noise(q * 4.0f, 23);
+  // Lattice cells per unit of u (around the trunk) and of v; the footprint in cells is
+  // taken along the finer of the two.
+  const float cells_per_uv = std::max(3.0f * std::max(1.0f, std::round(d.scale.x())), d.scale.y());
+  const float fp = std::max(0.0f, footprint) * cells_per_uv;
+  const float streak = fbm_filtered(Vec3f(q.x(), q.y(), q.z() * 0.25f), 11, 3, fp);
+  const float fleck_w = band_weight(4.0f * fp);
+  const float fleck = fleck_w > 0 ? fleck_w * gradient_noise(q * 4.0f, 23) : 0.0f;
   const float t = std::clamp(0.55f + 0.9f * streak + 0.25f * fleck, 0.0f, 1.0f);
   return d.color_b + (d.color_a - d.color_b) * t;
 }
@@ -142,7 +148,7 @@ int TextureStore::add(const TextureDesc& desc, const Location& where) {
 Color TextureStore::rgb(int handle, const Vec2f& uv, float footprint, bool primary) const {
   const Entry& e = impl_->entries[handle];
   const Vec2f st(uv.x() * e.desc.scale.x(), uv.y() * e.desc.scale.y());
-  if (!e.handle) return procedural_bark(e.desc, uv);
+  if (!e.handle) return procedural_bark(e.desc, uv, footprint);
   OIIO::TextureOpt opt;
   opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
   if (!primary) opt.interpmode = OIIO::TextureOpt::InterpBilinear;
@@ -157,7 +163,7 @@ Color TextureStore::rgb(int handle, const Vec2f& uv, float footprint, bool prima
 
 float TextureStore::scalar(int handle, const Vec2f& uv, float footprint, bool primary) const {
   const Entry& e = impl_->entries[handle];
-  if (!e.handle) return luminance(procedural_bark(e.desc, uv));
+  if (!e.handle) return luminance(procedural_bark(e.desc, uv, footprint));
   OIIO::TextureOpt opt;
   opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
   if (!primary) opt.interpmode = OIIO::TextureOpt::InterpBilinear;
