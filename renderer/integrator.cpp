@@ -39,7 +39,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
   Color L = Color::Zero(), beta = Color::Ones();
   bool specular = true;
   float prev_pdf = 0;
-  Vec3f prev_p = ray.o;
+  Vec3f prev_p = ray.o, prev_n = Vec3f::Zero();  // previous vertex and its receiving normal
   const auto& materials = scene.materials();
   const auto& textures = scene.textures();
   for (int depth = 0;; ++depth) {
@@ -48,7 +48,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     if (!scene.intersect(ray, kInf, &hit)) {
       for (const Light* l : scene.infinite_lights()) {
         float light_pdf = 0;
-        const Color Le = l->Le(ray.d, &light_pdf);
+        const Color Le = l->Le_pdf(ray.d, prev_n, &light_pdf);
         if ((Le <= 0.0f).all()) continue;
         L += beta * Le * (specular ? 1.0f : power_heuristic(prev_pdf, light_pdf));
       }
@@ -103,6 +103,8 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     // Next-event estimation: one sample of every light (the scene has a handful of light
     // objects — each sun, sky and environment, plus all emissive triangles as one light that
     // picks a triangle by power), so no light-selection noise.
+    // Light can arrive from ng's side only, unless the surface transmits.
+    const Vec3f receiving_n = transmissive ? Vec3f::Zero() : ng;
     if (!bsdf.is_delta()) {
       const auto& lights = scene.lights();
       Vec4f ul = Vec4f::Zero();
@@ -111,7 +113,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
         if (li % 2 == 0) ul = sampler.get4d();
         const Vec2f u = li % 2 == 0 ? Vec2f(ul[0], ul[1]) : Vec2f(ul[2], ul[3]);
         const Light* light = lights[li].get();
-        const auto ls = light->sample(hit.p, u);
+        const auto ls = light->sample_at(hit.p, receiving_n, u);
         if (!ls || !(ls->delta || ls->pdf > 0) || !(ls->L > 0.0f).any()) continue;
         const Vec3f wi_l = frame.to_local(ls->wi);
         if (!geometrically_consistent(wo, ls->wi, ng, wo_l.z(), wi_l.z())) continue;
@@ -140,6 +142,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     specular = bs->delta;
     prev_pdf = bs->pdf;
     prev_p = hit.p;
+    prev_n = receiving_n;
     ray = Ray{offset_ray_origin(hit.p, ng, wi), wi};
     // Russian roulette after a few bounces (survival ∝ throughput).
     if (depth >= 3) {

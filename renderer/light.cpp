@@ -20,6 +20,17 @@ std::optional<LightSample> UniformEnvironment::sample(const Vec3f&, const Vec2f&
   return s;
 }
 
+std::optional<LightSample> UniformEnvironment::sample_at(const Vec3f& p, const Vec3f& n, const Vec2f& u) const {
+  if (!(n.squaredNorm() > 0)) return sample(p, u);
+  LightSample s;
+  s.wi = Frame(n).to_world(sample_cosine_hemisphere(u));
+  s.pdf = pdf_at(s.wi, n);
+  if (!(s.pdf > 0)) return std::nullopt;
+  s.L = L_;
+  s.dist = kInf;
+  return s;
+}
+
 // ---- environment map
 EnvironmentMap::EnvironmentMap(std::vector<float> rgb, int width, int height, float intensity, float rotation_deg)
     : rgb_(std::move(rgb)), w_(width), h_(height), intensity_(intensity),
@@ -68,7 +79,7 @@ Vec3f EnvironmentMap::to_world(const Vec3f& w) const {
 
 Color EnvironmentMap::Le(const Vec3f& dir) const { return bilinear(direction_to_uv(to_local(dir))) * intensity_; }
 
-Color EnvironmentMap::Le(const Vec3f& dir, float* pdf) const {
+Color EnvironmentMap::Le_pdf(const Vec3f& dir, const Vec3f&, float* pdf) const {
   const Vec2f uv = direction_to_uv(to_local(dir));
   const float sin_t = std::sqrt(std::max(0.0f, 1.0f - dir.y() * dir.y()));
   *pdf = sin_t > 0 ? dist_.pdf(uv) / (2 * kPi * kPi * sin_t) : 0.0f;

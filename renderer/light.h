@@ -28,20 +28,37 @@ class Light {
   virtual float pdf(const Vec3f& wi) const { (void)wi; return 0; }
   // Radiance seen along an escaped ray with direction `dir` (infinite lights only).
   virtual Color Le(const Vec3f& dir) const { (void)dir; return Color::Zero(); }
-  // Le(dir) and pdf(dir) together (one direction lookup for lights that can share it).
-  virtual Color Le(const Vec3f& dir, float* pdf_out) const {
-    *pdf_out = pdf(dir);
+  // Sampling that knows the receiving surface's normal `n` (pointing to the side that can
+  // receive light; zero when both sides can, e.g. for transmissive surfaces). Lights that
+  // can use it sample only that hemisphere; the default ignores it.
+  virtual std::optional<LightSample> sample_at(const Vec3f& p, const Vec3f& n, const Vec2f& u) const {
+    (void)n;
+    return sample(p, u);
+  }
+  virtual float pdf_at(const Vec3f& wi, const Vec3f& n) const {
+    (void)n;
+    return pdf(wi);
+  }
+  // Le(dir) and pdf_at(dir, n) together (one direction lookup for lights that can share it).
+  virtual Color Le_pdf(const Vec3f& dir, const Vec3f& n, float* pdf_out) const {
+    *pdf_out = pdf_at(dir, n);
     return Le(dir);
   }
 };
 
-// Uniform environment: radiance `L` from every direction.
+// Uniform environment: radiance `L` from every direction. With a receiver normal it samples
+// the cosine-weighted hemisphere above it (the whole integrand when L is constant), else the
+// sphere uniformly.
 class UniformEnvironment final : public Light {
  public:
   explicit UniformEnvironment(const Color& L) : L_(L) {}
   bool infinite() const override { return true; }
   std::optional<LightSample> sample(const Vec3f& p, const Vec2f& u) const override;
+  std::optional<LightSample> sample_at(const Vec3f& p, const Vec3f& n, const Vec2f& u) const override;
   float pdf(const Vec3f&) const override { return 1.0f / (4 * kPi); }
+  float pdf_at(const Vec3f& wi, const Vec3f& n) const override {
+    return n.squaredNorm() > 0 ? std::max(0.0f, wi.dot(n)) * kInvPi : pdf(wi);
+  }
   Color Le(const Vec3f&) const override { return L_; }
 
  private:
@@ -58,7 +75,7 @@ class EnvironmentMap final : public Light {
   std::optional<LightSample> sample(const Vec3f& p, const Vec2f& u) const override;
   float pdf(const Vec3f& wi) const override;
   Color Le(const Vec3f& dir) const override;
-  Color Le(const Vec3f& dir, float* pdf_out) const override;
+  Color Le_pdf(const Vec3f& dir, const Vec3f& n, float* pdf_out) const override;
 
   static Vec2f direction_to_uv(const Vec3f& d);
   static Vec3f uv_to_direction(const Vec2f& uv);

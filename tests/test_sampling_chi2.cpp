@@ -10,8 +10,8 @@ namespace phellem {
 namespace {
 
 using test::chi2_sphere;
-// Bonferroni-corrected significance: ~12 chi-square tests in this file at 1% overall.
-constexpr double kAlpha = 0.01 / 12;
+// Bonferroni-corrected significance: ~14 chi-square tests in this file at 1% overall.
+constexpr double kAlpha = 0.01 / 14;
 
 TEST(Chi2, GammaQMatchesKnownValues) {
   // Q(1, x) = exp(-x); chi-square with 2 dof at 5.991 has p = 0.05.
@@ -55,6 +55,23 @@ TEST(Chi2, UniformConeSunDisk) {
       EXPECT_GE(s->wi.dot(dir), cos_sun - 1e-6f);
       EXPECT_NEAR(s->pdf, uniform_cone_pdf(cos_sun), 1e-3f * s->pdf);
     }
+}
+
+TEST(Chi2, UniformEnvironmentAboveATiltedNormal) {
+  const UniformEnvironment env(Color(0.5f, 0.6f, 0.7f));
+  const Vec3f n = Vec3f(0.4f, -0.3f, 0.8f).normalized();
+  auto r = chi2_sphere([&](const Vec2f& u) -> std::optional<Vec3f> {
+                         auto s = env.sample_at(Vec3f::Zero(), n, u);
+                         if (!s) return std::nullopt;
+                         return s->wi;
+                       },
+                       [&](const Vec3f& wi) { return env.pdf_at(wi, n); });
+  EXPECT_GT(r.p_value, kAlpha) << r.summary();
+  EXPECT_NEAR(r.pdf_integral, 1.0, 2e-3);
+  // Without a normal (transmissive receivers) the whole sphere, uniformly.
+  auto r2 = chi2_sphere([&](const Vec2f& u) -> std::optional<Vec3f> { return env.sample_at(Vec3f::Zero(), Vec3f::Zero(), u)->wi; },
+                        [&](const Vec3f& wi) { return env.pdf_at(wi, Vec3f::Zero()); });
+  EXPECT_GT(r2.p_value, kAlpha) << r2.summary();
 }
 
 TEST(Chi2, EnvironmentMapImportanceSampling) {
