@@ -21,11 +21,8 @@ from mathutils import Vector
 
 # Debian 12 ships Blender 3.4, whose glTF importer still uses numpy.bool, with NumPy 1.24,
 # which removed that alias: restore it (it always meant the builtin bool).
-if not hasattr(numpy, "bool") or numpy.bool is not bool:
-    try:
-        numpy.bool = bool
-    except Exception:
-        pass
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
 
 
 def to_blender(v):
