@@ -42,17 +42,7 @@ float gradient_noise(const Vec3f& p, uint32_t seed) {
   return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));
 }
 
-float fbm(const Vec3f& p, uint32_t seed, int octaves, float gain) {
-  float sum = 0, amp = 1, norm = 0;
-  Vec3f q = p;
-  for (int i = 0; i < octaves; ++i) {
-    sum += amp * gradient_noise(q, hash_combine(seed, uint32_t(i)));
-    norm += amp;
-    amp *= gain;
-    q *= 2.03f;
-  }
-  return sum / norm;
-}
+float fbm(const Vec3f& p, uint32_t seed, int octaves, float gain) { return fbm_filtered(p, seed, octaves, 0.0f, gain); }
 
 float fbm_filtered(const Vec3f& p, uint32_t seed, int octaves, float footprint, float gain) {
   float sum = 0, amp = 1, norm = 0;

@@ -349,13 +349,6 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
   check_embree(*embree_errors_);
   stats_.embree_bytes = size_t(embree_bytes_peak_->load());
 
-  RTCBounds b;
-  rtcGetSceneBounds(scene_.get(), &b);
-  if (b.lower_x <= b.upper_x) {
-    radius_ = 0.5f * (Vec3f(b.upper_x, b.upper_y, b.upper_z) - Vec3f(b.lower_x, b.lower_y, b.lower_z)).norm();
-    radius_ = std::clamp(radius_, 1e-3f, 1e6f);
-  }
-
   // Lights.
   for (const LightDesc& l : desc.lights) {
     switch (l.type) {

@@ -92,7 +92,6 @@ class RenderScene {
   const AreaLights* area_lights() const { return area_; }
   // Light selection ∝ power; returns the chosen light and its probability.
   const GeometryStats& stats() const { return stats_; }
-  float scene_radius() const { return radius_; }
   RTCScene embree_scene() const { return scene_.get(); }
 
  private:
@@ -113,7 +112,6 @@ class RenderScene {
   std::vector<const Light*> infinite_;
   AreaLights* area_ = nullptr;
   GeometryStats stats_;
-  float radius_ = 1;
   std::shared_ptr<std::atomic<long long>> embree_bytes_now_, embree_bytes_peak_;
   std::shared_ptr<EmbreeErrors> embree_errors_;
 };

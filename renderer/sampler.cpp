@@ -100,33 +100,9 @@ __attribute__((target_clones("avx2", "default"))) Vec4f Sampler::get4d() {
   // Both scrambles reverse, permute and reverse back; staying in the reversed domain between
   // them leaves one reversal per dimension (tests/test_sampler.cpp checks the identity).
   const uint32_t r = laine_karras_permutation(reversed_index_, set_seed);
-  alignas(16) uint32_t x[4], seed[4];
-  for (int d = 0; d < 4; ++d) {
-    const auto& t = kSobol.reversed[d];
-    x[d] = t[0][r & 0xFF] ^ t[1][(r >> 8) & 0xFF] ^ t[2][(r >> 16) & 0xFF] ^ t[3][r >> 24];
-  }
-  for (int d = 0; d < 4; ++d) {  // hash_combine(set_seed, d + 1), lane-wise
-    const uint32_t v = uint32_t(d) + 1u;
-    uint32_t h = set_seed ^ (v + 0x9e3779b9U + (set_seed << 6) + (set_seed >> 2));
-    h ^= h >> 16;
-    h *= 0x7feb352dU;
-    h ^= h >> 15;
-    h *= 0x846ca68bU;
-    h ^= h >> 16;
-    seed[d] = h;
-  }
-  for (int d = 0; d < 4; ++d) {  // laine_karras_permutation, then reverse_bits, lane-wise
-    uint32_t y = x[d] + seed[d];
-    y ^= y * 0x6c50b47cu;
-    y ^= y * 0xb82f1e52u;
-    y ^= y * 0xc7afe638u;
-    y ^= y * 0x8d22f6e6u;
-    y = ((y >> 1) & 0x55555555u) | ((y & 0x55555555u) << 1);
-    y = ((y >> 2) & 0x33333333u) | ((y & 0x33333333u) << 2);
-    y = ((y >> 4) & 0x0F0F0F0Fu) | ((y & 0x0F0F0F0Fu) << 4);
-    y = ((y >> 8) & 0x00FF00FFu) | ((y & 0x00FF00FFu) << 8);
-    x[d] = (y >> 16) | (y << 16);
-  }
+  alignas(16) uint32_t x[4];
+  for (int d = 0; d < 4; ++d) x[d] = sobol_reversed(r, d);
+  for (int d = 0; d < 4; ++d) x[d] = reverse_bits(laine_karras_permutation(x[d], hash_combine(set_seed, uint32_t(d) + 1)));
   // u32_to_unit_float: the top 24 bits, so the result is always < 1.
   return Vec4f(float(x[0] >> 8), float(x[1] >> 8), float(x[2] >> 8), float(x[3] >> 8)) * 0x1p-24f;
 }

@@ -111,6 +111,13 @@ Color procedural_bark(const TextureDesc& d, const Vec2f& uv, float footprint) {
   return d.color_b + (d.color_a - d.color_b) * t;
 }
 
+OIIO::TextureOpt texture_options(bool primary) {
+  OIIO::TextureOpt opt;
+  opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
+  if (!primary) opt.interpmode = OIIO::TextureOpt::InterpBilinear;
+  return opt;
+}
+
 }  // namespace
 
 struct TextureStore::Impl {
@@ -149,9 +156,7 @@ Color TextureStore::rgb(int handle, const Vec2f& uv, float footprint, bool prima
   const Entry& e = impl_->entries[handle];
   const Vec2f st(uv.x() * e.desc.scale.x(), uv.y() * e.desc.scale.y());
   if (!e.handle) return procedural_bark(e.desc, uv, footprint);
-  OIIO::TextureOpt opt;
-  opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
-  if (!primary) opt.interpmode = OIIO::TextureOpt::InterpBilinear;
+  OIIO::TextureOpt opt = texture_options(primary);  // OIIO takes it by non-const reference
   float out[4] = {0, 0, 0, 0};
   const float fw = footprint * std::max(e.desc.scale.x(), e.desc.scale.y());
   const int nc = std::min(3, e.channels);
@@ -164,9 +169,7 @@ Color TextureStore::rgb(int handle, const Vec2f& uv, float footprint, bool prima
 float TextureStore::scalar(int handle, const Vec2f& uv, float footprint, bool primary) const {
   const Entry& e = impl_->entries[handle];
   if (!e.handle) return luminance(procedural_bark(e.desc, uv, footprint));
-  OIIO::TextureOpt opt;
-  opt.swrap = opt.twrap = OIIO::TextureOpt::WrapPeriodic;
-  if (!primary) opt.interpmode = OIIO::TextureOpt::InterpBilinear;
+  OIIO::TextureOpt opt = texture_options(primary);  // OIIO takes it by non-const reference
   const Vec2f st(uv.x() * e.desc.scale.x(), uv.y() * e.desc.scale.y());
   const float fw = footprint * std::max(e.desc.scale.x(), e.desc.scale.y());
   float out = 0;

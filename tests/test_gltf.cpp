@@ -95,6 +95,13 @@ void write_png_texture(const std::string& path) {
   out->close();
 }
 
+// Removes the one texture, so that a malformed file fails on its geometry, not its image.
+void drop_texture(TestGltf& g) {
+  g.doc["images"] = nlohmann::json::array();
+  g.doc["textures"] = nlohmann::json::array();
+  g.doc["materials"][1]["pbrMetallicRoughness"].erase("baseColorTexture");
+}
+
 std::string write_gltf(const std::string& dir, TestGltf g, bool embed_buffer = true) {
   if (embed_buffer) g.doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(g.bin);
   const std::string path = dir + "/model.gltf";
@@ -203,9 +210,7 @@ TEST(Gltf, MalformedFilesExitTwoWithAMessage) {
        [](const std::string& d) {
          TestGltf g = make_gltf("x.png");
          g.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 42;
-         g.doc["images"] = nlohmann::json::array();
-         g.doc["textures"] = nlohmann::json::array();
-         g.doc["materials"][1]["pbrMetallicRoughness"].erase("baseColorTexture");
+         drop_texture(g);
          return write_gltf(d, g);
        },
        "accessor"},
@@ -213,9 +218,7 @@ TEST(Gltf, MalformedFilesExitTwoWithAMessage) {
        [](const std::string& d) {
          TestGltf g = make_gltf("x.png");
          g.bin[128] = 99;
-         g.doc["images"] = nlohmann::json::array();
-         g.doc["textures"] = nlohmann::json::array();
-         g.doc["materials"][1]["pbrMetallicRoughness"].erase("baseColorTexture");
+         drop_texture(g);
          return write_gltf(d, g);
        },
        "meshes[0].primitives[0].indices: index 99"},
@@ -231,9 +234,7 @@ TEST(Gltf, MalformedFilesExitTwoWithAMessage) {
          TestGltf g = make_gltf("x.png");
          g.bin.resize(100);
          g.doc["buffers"][0]["byteLength"] = 100;
-         g.doc["images"] = nlohmann::json::array();
-         g.doc["textures"] = nlohmann::json::array();
-         g.doc["materials"][1]["pbrMetallicRoughness"].erase("baseColorTexture");
+         drop_texture(g);
          return write_gltf(d, g);
        },
        "bufferViews"},
