@@ -1,0 +1,159 @@
+// Fracture propagation between strips (Lefebvre & Neyret 2002, sec. 3.2.4 and 5.3).
+#include <algorithm>
+#include <cmath>
+
+#include "bark/strips/strip_equilibrium.h"
+#include "bark/strips/strip_model.h"
+
+namespace phellem::bark {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586;
+constexpr double kPi = 3.141592653589793;
+// Fractures this many elements either side of a tip's target are tested for influence.
+constexpr size_t kInfluenceElements = 6;
+
+double wrap_angle(double a) { return a - kTwoPi * std::floor((a + kPi) / kTwoPi); }  // to [-π, π)
+}  // namespace
+
+double StripModel::centre_theta(size_t j, size_t i) const {
+  const Strip& s = strips_[j];
+  return theta_of(j, s.x[i] + 0.5 * s.length(i));
+}
+
+void StripModel::measure_fractures() {
+  // Each fracture's element count and summed width: its length is count × strip width, its
+  // mean width the Inglis ratio's denominator (sec. 3.2.4: "we used the mean fracture width").
+  fracture_count_.assign(skeleton_.ids(), 0.0);
+  fracture_width_.assign(skeleton_.ids(), 0.0);
+  for (size_t j = 0; j < strips_.size(); ++j) {
+    const Strip& s = strips_[j];
+    for (size_t i = 0; i < s.size(); ++i) {
+      const Element& e = s.elements[i];
+      if (e.kind != ElementKind::Fracture) continue;
+      const size_t r = size_t(skeleton_.find(s.fractures[size_t(e.fracture)].id));
+      fracture_count_[r] += 1;
+      fracture_width_[r] += s.length(i);
+    }
+  }
+}
+
+void StripModel::propagate_from(size_t j) {
+  const size_t n = strips_.size();
+  const double ws = domain_.strip_width;
+  const double jitter = params_.propagation_jitter_deg * kPi / 180.0;
+  auto neighbour = [&](bool up) -> long {
+    if (up) return j + 1 < n ? long(j + 1) : (domain_.wrap_s ? 0 : -1);
+    return j > 0 ? long(j - 1) : (domain_.wrap_s ? long(n - 1) : -1);
+  };
+  StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
+  // Tips of this strip in element order (collected first: the loop does not touch strip j).
+  struct Tip {
+    size_t element;
+    int32_t fe;
+  };
+  std::vector<Tip> tips;
+  {
+    const Strip& s = strips_[j];
+    for (size_t i = 0; i < s.size(); ++i) {
+      const Element& e = s.elements[i];
+      if (e.kind != ElementKind::Fracture) continue;
+      const FractureElement& fe = s.fractures[size_t(e.fracture)];
+      if (fe.active && (fe.up < 0 || fe.down < 0)) tips.push_back({i, e.fracture});
+    }
+  }
+  for (const Tip& tip : tips) {
+    for (bool up : {true, false}) {
+      FractureElement& src = strips_[j].fractures[size_t(tip.fe)];
+      if ((up ? src.up : src.down) >= 0) continue;
+      const double u1 = rng.symmetric();  // drawn for every tip side: stable streams
+      const size_t root = size_t(skeleton_.find(src.id));
+      const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
+      // Inglis: the stress at a tip grows with the fracture's length-to-width ratio.
+      if (!(count * ws > params_.inglis_threshold * mean_width)) continue;
+      const double theta = centre_theta(j, tip.element);
+      const long t = neighbour(up);
+      if (t < 0) {
+        exits_.push_back({int(j), up, theta});
+        continue;
+      }
+      const size_t ts = size_t(t);
+      if (ts == j) continue;
+      Strip& st = strips_[ts];
+      // Base direction: parallel to the nearest fracture of the target strip whose influence
+      // f(a'·dist/width) (a threshold test) reaches the tip; otherwise along the axis.
+      const double x_straight = x_of(ts, theta);
+      double base_slope = 0;  // dθ/ds of the influencing fracture (radians per metre)
+      double best = 1e300;
+      const size_t ne = st.size(), at = element_at(ts, x_straight);
+      const size_t reach = std::min<size_t>(ne, 2 * kInfluenceElements + 1);
+      for (size_t k = 0; k < reach; ++k) {
+        const size_t gi = (at + ne + k - std::min(kInfluenceElements, ne / 2)) % ne;
+        const Element& ge = st.elements[gi];
+        if (ge.kind != ElementKind::Fracture) continue;
+        const FractureElement& g = st.fractures[size_t(ge.fracture)];
+        if (!g.active) continue;
+        const double gw = st.length(gi);
+        double d = std::abs(st.x[gi] + 0.5 * gw - x_straight);
+        if (st.cyclic) d = std::min(d, st.circumference - std::fmod(d, st.circumference));
+        if (gw <= 0 || params_.influence * d >= gw || d >= best) continue;
+        best = d;
+        // g's own direction, from its element back in our strip, if it continues there.
+        const int32_t back = up ? g.down : g.up;
+        base_slope = 0;
+        if (back >= 0) {
+          const Strip& s = strips_[j];
+          for (size_t bi = 0; bi < s.size(); ++bi)
+            if (s.elements[bi].kind == ElementKind::Fracture && s.elements[bi].fracture == back) {
+              base_slope = wrap_angle(centre_theta(ts, gi) - centre_theta(j, bi)) / ws * (up ? 1.0 : -1.0);
+              break;
+            }
+        }
+      }
+      // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
+      const double radius = st.circumference / kTwoPi;
+      const double angle = std::atan(base_slope * radius) + jitter * u1;
+      const double dtheta = std::tan(angle) * ws / radius * (up ? 1.0 : -1.0);
+      const double x = x_of(ts, theta + dtheta);
+      const size_t i = element_at(ts, x);
+      const Element& e = st.elements[i];
+      int32_t g = -1;
+      if (e.kind == ElementKind::Fracture) {
+        // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
+        g = e.fracture;
+        const size_t other = size_t(skeleton_.find(st.fractures[size_t(g)].id));
+        if (other != root && skeleton_.merge(int32_t(root), int32_t(other))) {
+          ++stats_.merged;
+          const size_t r = size_t(skeleton_.find(int32_t(root))), o = r == root ? other : root;
+          fracture_count_[r] += fracture_count_[o];
+          fracture_width_[r] += fracture_width_[o];
+        }
+      } else {
+        // Inglis' iso-strain curves run parallel to fractures: only bark still in tension breaks.
+        if (st.length(i) < e.rest * (1.0 + params_.propagation_tension * (e.threshold - 1.0))) continue;
+        double off = x - st.x[i];
+        if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
+        const double L = st.length(i);
+        const long long before = breaks_[ts];
+        if (!break_element(ts, i, L > 0 ? off / L : 0.5, &g)) continue;
+        breaks_[ts] = before;  // a propagation, not a new fracture
+        FractureElement& ng = st.fractures[size_t(g)];
+        ng.id = src.id;
+        ++stats_.propagated;
+        const size_t r = size_t(skeleton_.find(src.id));
+        fracture_count_[r] += 1;
+        for (size_t gi = 0; gi < st.size(); ++gi)
+          if (st.elements[gi].kind == ElementKind::Fracture && st.elements[gi].fracture == g) {
+            fracture_width_[r] += st.length(gi);
+            break;
+          }
+      }
+      FractureElement& src2 = strips_[j].fractures[size_t(tip.fe)];
+      FractureElement& ge2 = st.fractures[size_t(g)];
+      (up ? src2.up : src2.down) = g;
+      if ((up ? ge2.down : ge2.up) < 0) (up ? ge2.down : ge2.up) = tip.fe;
+    }
+  }
+}
+
+}  // namespace phellem::bark

@@ -1,0 +1,78 @@
+#include "bark/strips/strip_domain.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phellem::bark {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+// Dilatation d(s, θ): sum of the user's Gaussian bulges (θ distance wraps).
+double dilatation(const StripParams& p, double s, double theta) {
+  double d = 0;
+  for (const DilatationBulge& b : p.dilatation) {
+    double dt = std::fmod(std::abs(theta - b.theta), kTwoPi);
+    dt = std::min(dt, kTwoPi - dt);
+    const double ds = s - b.s;
+    d += b.amount * std::exp(-0.5 * (ds * ds / (b.sigma_s * b.sigma_s) + dt * dt / (b.sigma_theta * b.sigma_theta)));
+  }
+  return d;
+}
+
+void fill_exponents(const StripParams& p, StripMetric& m, int bins) {
+  if (p.dilatation.empty()) return;
+  m.exponent.resize(size_t(bins));
+  for (int k = 0; k < bins; ++k) m.exponent[size_t(k)] = 1.0 + dilatation(p, m.s, kTwoPi * (k + 0.5) / bins);
+}
+
+int strip_count(double length, double width) { return std::max(1, int(std::lround(length / width))); }
+
+}  // namespace
+
+StripDomain cylinder_domain(const GeneralizedCylinder& c, const StripParams& p, int bins) {
+  StripDomain d;
+  d.length = c.length();
+  const int n = strip_count(d.length, p.strip_width);
+  d.strip_width = d.length / n;
+  d.cyclic = true;
+  d.strips.resize(size_t(n));
+  const double h = 0.25 * d.strip_width;
+  for (int j = 0; j < n; ++j) {
+    StripMetric& m = d.strips[size_t(j)];
+    m.s = (j + 0.5) * d.strip_width;
+    m.bin_length.resize(size_t(bins));
+    m.width.resize(size_t(bins));
+    const double s0 = std::max(0.0, m.s - h), s1 = std::min(d.length, m.s + h);
+    for (int k = 0; k < bins; ++k) {
+      const double t0 = kTwoPi * k / bins, t1 = kTwoPi * (k + 1) / bins, tm = 0.5 * (t0 + t1);
+      // Arc length of the bin: midpoint rule on |∂P/∂θ| over two halves (radius varies in θ).
+      const Eigen::Vector3d a = c.position(m.s, t0), b = c.position(m.s, tm), e = c.position(m.s, t1);
+      m.bin_length[size_t(k)] = (b - a).norm() + (e - b).norm();
+      m.width[size_t(k)] = (c.position(s1, tm) - c.position(s0, tm)).norm() / (s1 - s0);
+    }
+    fill_exponents(p, m, bins);
+  }
+  return d;
+}
+
+StripDomain flat_domain(double width, double height, const StripParams& p, int bins) {
+  StripDomain d;
+  d.length = height;
+  const int n = strip_count(height, p.strip_width);
+  d.strip_width = height / n;
+  d.cyclic = p.tile_theta;
+  d.wrap_s = p.tile_s;
+  d.strips.resize(size_t(n));
+  for (int j = 0; j < n; ++j) {
+    StripMetric& m = d.strips[size_t(j)];
+    m.s = (j + 0.5) * d.strip_width;
+    m.bin_length.assign(size_t(bins), width / bins);
+    m.width.assign(size_t(bins), 1.0);
+    fill_exponents(p, m, bins);
+  }
+  return d;
+}
+
+}  // namespace phellem::bark

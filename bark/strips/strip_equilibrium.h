@@ -1,0 +1,25 @@
+// Quasi-static equilibrium of one strip (Lefebvre & Neyret 2002, sec. 3.2.2 and 5.1).
+#pragma once
+
+#include "bark/strips/strip.h"
+
+namespace phellem::bark {
+
+// Moves the nodes of `strip` to the exact equilibrium of its elements and attachment springs
+// (sec. 5.1):  -K_i (x_i - x_{i-1} - l0_i) + K_{i+1} (x_{i+1} - x_i - l0_{i+1}) - K_a (x_i - a_i) = 0
+// for every free node. (The paper writes +K_a(x_i - a_i); a spring pulling the node back to
+// its substrate point enters with the opposite sign of its displacement.)
+// Cyclic strips: x_{i+n} = x_i + C; a cyclic tridiagonal system solved by Sherman–Morrison
+// and two Thomas sweeps, O(n). Without any attachment the equilibrium has one uniform
+// tension T = (C - Σ l0) / Σ 1/K (sec. 3.2.2) and the rigid rotation is fixed by keeping
+// the mean displacement from the anchors zero. Open strips keep both end nodes fixed.
+void solve_equilibrium(Strip& strip);
+
+// Largest nodal force imbalance relative to the largest force in the strip (element tension
+// or attachment force); 0 for a strip without free nodes.
+double equilibrium_residual(const Strip& strip);
+
+// Tension K (L - l0) of element i at the strip's current node positions.
+double element_tension(const Strip& strip, size_t i);
+
+}  // namespace phellem::bark

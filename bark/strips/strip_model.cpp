@@ -1,0 +1,247 @@
+#include "bark/strips/strip_model.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "bark/strips/strip_equilibrium.h"
+
+namespace phellem::bark {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586;
+}
+
+StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::move(domain)), params_(std::move(params)) {
+  if (auto e = validate(params_)) throw *e;
+  const size_t n = domain_.strips.size();
+  strips_.resize(n);
+  cum_.resize(n);
+  epidermis0_.resize(n);
+  breaks_.assign(n, 0);
+  scripted_.assign(n, 0);
+  hardened_.assign(n, 0);
+  capped_.assign(n, 0);
+  residual_.assign(n, 0.0);
+  tbb::parallel_for(size_t(0), n, [&](size_t j) { init_strip(j); });
+  // sec. 3.2.3: check S against the softest element actually built (strips narrower than
+  // nominal on the concave side of bent limbs are softer).
+  double softest = 1e300;
+  for (const Strip& s : strips_)
+    for (const Element& e : s.elements) softest = std::min(softest, e.stiffness);
+  const ThresholdRange r = valid_threshold_range(params_, softest);
+  if (!(params_.S() > r.low)) {
+    std::ostringstream m;
+    m.precision(6);
+    m << "S = " << params_.S() << " is outside its valid range (" << r.low << ", " << r.high
+      << "] on this surface (its softest epidermis element has stiffness " << softest
+      << "; Lefebvre & Neyret 2002 sec. 3.2.3)";
+    throw StripParamError{"threshold", m.str()};
+  }
+}
+
+void StripModel::solve(size_t j) {
+  solve_equilibrium(strips_[j]);
+  if (check_) residual_[j] = std::max(residual_[j], equilibrium_residual(strips_[j]));
+}
+
+double StripModel::max_residual() const {
+  double m = 0;
+  for (double r : residual_) m = std::max(m, r);
+  return m;
+}
+
+double StripModel::scale_at_step(int t) const {
+  return std::pow(params_.growth_rate, -double(params_.steps - t));
+}
+
+double StripModel::width_factor(size_t j, double theta) const {
+  const auto& w = domain_.strips[j].width;
+  const int m = int(w.size());
+  double u = theta / kTwoPi;
+  u -= std::floor(u);
+  return w[size_t(std::min(m - 1, int(u * m)))];
+}
+
+double StripModel::epidermis_stiffness(size_t j, double theta, double rest, uint8_t level) const {
+  // sec. 5.3: K = R w / l0, here relative to the reference element (nominal width,
+  // element_length), so that K = R for it. Hardened fracture surface is softer (Figure 9).
+  const double R = params_.stiffness * (level > 0 ? params_.refracture_stiffness : 1.0);
+  return R * width_factor(j, theta) * params_.element_length / rest;
+}
+
+double StripModel::jittered_threshold(size_t j, double theta, StreamRng& rng) const {
+  // sec. 3.2.3: jittered threshold; the weakness map lowers it where the user painted.
+  double excess = (params_.S() - 1.0) * (1.0 + params_.threshold_noise * rng.symmetric());
+  if (!params_.weakness.empty())
+    excess *= 1.0 - params_.weakness_strength * params_.weakness.sample(theta / kTwoPi, domain_.strips[j].s / domain_.length);
+  return 1.0 + excess;
+}
+
+double StripModel::x_of(size_t j, double theta) const {
+  const auto& c = cum_[j];
+  const int m = int(c.size()) - 1;
+  const double turns = std::floor(theta / kTwoPi);
+  const double u = (theta / kTwoPi - turns) * m;
+  const int k = std::min(m - 1, int(u));
+  return turns * c[size_t(m)] + c[size_t(k)] + (u - k) * (c[size_t(k) + 1] - c[size_t(k)]);
+}
+
+double StripModel::theta_of(size_t j, double x) const {
+  const auto& c = cum_[j];
+  const int m = int(c.size()) - 1;
+  const double C = c[size_t(m)];
+  const double turns = std::floor(x / C);
+  const double r = x - turns * C;
+  const int k = int(std::upper_bound(c.begin() + 1, c.end() - 1, r) - c.begin()) - 1;
+  const double len = c[size_t(k) + 1] - c[size_t(k)];
+  const double f = len > 0 ? (r - c[size_t(k)]) / len : 0.0;
+  return kTwoPi * (turns + (k + f) / m);
+}
+
+size_t StripModel::element_at(size_t j, double x) const {
+  const Strip& s = strips_[j];
+  if (s.cyclic) {
+    const double C = s.circumference;
+    x = s.x[0] + (x - s.x[0]) - std::floor((x - s.x[0]) / C) * C;
+  }
+  const auto it = std::upper_bound(s.x.begin(), s.x.begin() + long(s.size()), x);
+  return size_t(std::max<long>(0, long(it - s.x.begin()) - 1));
+}
+
+void StripModel::init_strip(size_t j) {
+  const StripMetric& m = domain_.strips[j];
+  const int M = int(m.bin_length.size());
+  auto& c = cum_[j];
+  c.assign(size_t(M) + 1, 0.0);
+  const double g = std::log(params_.growth_rate) * params_.steps;
+  for (int k = 0; k < M; ++k) {
+    const double e = m.exponent.empty() ? 1.0 : m.exponent[size_t(k)];
+    c[size_t(k) + 1] = c[size_t(k)] + m.bin_length[size_t(k)] * std::exp(-g * e);
+  }
+  Strip& s = strips_[j];
+  s.cyclic = domain_.cyclic;
+  s.width = domain_.strip_width;
+  s.circumference = c.back();
+  epidermis0_[j] = s.circumference;
+  const int n = std::max(3, int(std::ceil(s.circumference / params_.element_length - 1e-9)));  // l0 <= element_length
+  const double l = s.circumference / n;
+  StreamRng rng(params_.seed, j, ~0ULL);
+  s.elements.resize(size_t(n));
+  s.x.resize(s.cyclic ? size_t(n) : size_t(n) + 1);
+  for (int i = 0; i < n; ++i) {
+    Element& e = s.elements[size_t(i)];
+    const double theta = theta_of(j, (i + 0.5) * l);
+    e.rest = l;
+    e.stiffness = epidermis_stiffness(j, theta, l, 0);
+    e.width_factor = width_factor(j, theta);
+    e.threshold = jittered_threshold(j, theta, rng);
+    e.material = double(i) / n;
+    s.x[size_t(i)] = i * l;
+  }
+  if (!s.cyclic) s.x[size_t(n)] = s.circumference;
+  s.anchor = s.x;
+  update_attachment(j);
+}
+
+void StripModel::update_attachment(size_t j) {
+  // sec. 5.1: zero-rest-length springs glue the epidermis to the substrate; each node holds
+  // half of the epidermis on either side (fracture elements are not glued bark).
+  Strip& s = strips_[j];
+  const size_t n = s.size(), nodes = s.nodes();
+  s.attach.assign(nodes, 0.0);
+  if (params_.attachment <= 0) return;
+  const double k = params_.attachment / params_.element_length;
+  for (size_t i = 0; i < n; ++i) {
+    const Element& e = s.elements[i];
+    if (e.kind != ElementKind::Epidermis) continue;
+    const double a = 0.5 * k * e.rest * e.width_factor;
+    s.attach[i] += a;
+    s.attach[(i + 1) % nodes] += a;
+  }
+  if (!s.cyclic) s.attach.front() = s.attach.back() = 0;  // fixed ends
+}
+
+void StripModel::grow_strip(size_t j) {
+  // The substrate grows from step t to t + 1 (shrinking strategy seen forwards, sec. 5.2): each
+  // anchor keeps its substrate point θ; fracture elements take K_f of their rest length.
+  Strip& s = strips_[j];
+  const StripMetric& m = domain_.strips[j];
+  auto& c = cum_[j];
+  if (m.exponent.empty()) {
+    const double g = params_.growth_rate;
+    for (double& v : c) v *= g;
+    for (double& a : s.anchor) a *= g;
+  } else {
+    std::vector<double> theta(s.anchor.size());
+    for (size_t i = 0; i < theta.size(); ++i) theta[i] = theta_of(j, s.anchor[i]);
+    const double lg = std::log(params_.growth_rate);
+    std::vector<double> next(c.size(), 0.0);
+    for (size_t k = 0; k + 1 < c.size(); ++k) next[k + 1] = next[k] + (c[k + 1] - c[k]) * std::exp(lg * m.exponent[k]);
+    c.swap(next);
+    for (size_t i = 0; i < theta.size(); ++i) s.anchor[i] = x_of(j, theta[i]);
+  }
+  s.circumference = c.back();
+  s.x = s.anchor;
+  if (!s.cyclic) {
+    s.x.front() = 0;
+    s.x.back() = s.circumference;
+  }
+  for (Element& e : s.elements)
+    if (e.kind == ElementKind::Fracture) e.stiffness = params_.fracture_stiffness_at(e.rest);
+  update_attachment(j);
+}
+
+void StripModel::plasticity(size_t j) {
+  // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
+  // material fills the fractures, whose rest length becomes their current width.
+  Strip& s = strips_[j];
+  s.anchor = s.x;
+  for (size_t i = 0; i < s.size(); ++i) {
+    Element& e = s.elements[i];
+    if (e.kind == ElementKind::Fracture) {
+      e.rest = std::max(0.0, s.length(i));
+      e.stiffness = params_.fracture_stiffness_at(e.rest);
+    }
+  }
+}
+
+void StripModel::step() {
+  if (step_ >= params_.steps) return;
+  const size_t n = strips_.size();
+  exits_.clear();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 8), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t j = r.begin(); j < r.end(); ++j) {
+      grow_strip(j);
+      solve(j);
+    }
+  });
+  measure_fractures();
+  const bool upward = step_ % 2 == 0;
+  for (size_t k = 0; k < n; ++k) {
+    const size_t j = upward ? k : n - 1 - k;
+    break_strip(j);
+    assign_new_fracture_ids(j);
+    propagate_from(j);
+  }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 8), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t j = r.begin(); j < r.end(); ++j) {
+      refracture(j);
+      plasticity(j);
+    }
+  });
+  for (size_t j = 0; j < n; ++j) {
+    stats_.created += breaks_[j];
+    stats_.scripted += scripted_[j];
+    stats_.refractured += hardened_[j];
+    stats_.max_breaks_per_strip_step = std::max(stats_.max_breaks_per_strip_step, breaks_[j]);
+    stats_.capped += capped_[j];
+    breaks_[j] = scripted_[j] = hardened_[j] = capped_[j] = 0;
+  }
+  ++step_;
+}
+
+}  // namespace phellem::bark

@@ -1,0 +1,117 @@
+// StripModel: the strips of one cylinder (or flat sample) through growth.
+// Lefebvre & Neyret 2002: Figure 8 (per-step algorithm), sec. 3.2 (fracture creation,
+// propagation, opening), sec. 5 (attachment, mapped strips, dilatation), Figure 9 (refracture).
+//
+// Each step: the substrate grows (anchors follow it) and every strip is brought to equilibrium
+// (in parallel); then, as in the paper's Figure 8, a sweep over the strips breaks each strip
+// while an element exceeds its threshold and propagates its fractures into the neighbours
+// before they are visited, so a young sharp fracture can run along the axis within one step
+// (brittle fracture is fast next to growth) and relieve the strips it crosses. The sweep
+// alternates direction every step so that neither end is favoured. Wide fractures may then
+// harden into bark, and plasticity resets the attachment springs and the fracture rest
+// lengths. Random draws depend on (seed, strip, step) only: the result is bit-identical for
+// any thread count.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "bark/strips/fracture_skeleton.h"
+#include "bark/strips/random.h"
+#include "bark/strips/strip.h"
+#include "bark/strips/strip_domain.h"
+#include "bark/strips/strip_params.h"
+
+namespace phellem::bark {
+
+struct StripStats {
+  long long created = 0, scripted = 0, propagated = 0, merged = 0, refractured = 0;
+  long long max_breaks_per_strip_step = 0;  // largest number of breaks in one strip in one step
+  long long capped = 0;  // break loops stopped by the safety cap instead of the criterion (should stay 0)
+};
+
+// A location on another surface that fractures propagating off this one should continue
+// into (sec. 5.3, Figure 20): set by a caller that owns several models (a tree).
+struct PropagationExit {
+  int strip = 0;     // strip on this model from which a fracture leaves
+  bool up = true;    // leaving through the strip's upper (s+) side
+  double theta = 0;  // where it leaves
+};
+
+class StripModel {
+ public:
+  // Throws StripParamError when a parameter is outside its valid range.
+  StripModel(StripDomain domain, StripParams params);
+
+  // One growth step (Figure 8 for every strip, then propagation).
+  void step();
+  int steps_done() const { return step_; }
+  int steps_total() const { return params_.steps; }
+  // Growth factor of the substrate at the current step relative to the final shape.
+  double scale_at_step(int t) const;
+
+  const StripDomain& domain() const { return domain_; }
+  const StripParams& params() const { return params_; }
+  const std::vector<Strip>& strips() const { return strips_; }
+  const FractureSkeleton& skeleton() const { return skeleton_; }
+  const StripStats& stats() const { return stats_; }
+  OpeningMode opening_mode(int32_t fracture_id) const { return modes_[size_t(fracture_id)]; }
+
+  // Current substrate arc position on strip j of the final-shape angle θ, and back.
+  double x_of(size_t j, double theta) const;
+  double theta_of(size_t j, double x) const;
+  // Index of the element of strip j that contains arc position x (cyclic strips wrap x).
+  size_t element_at(size_t j, double x) const;
+
+  // Starts a fracture at (strip, θ) in the current state, linked to nothing; returns false if
+  // the location is already fractured. Used for scripted fractures and by a tree to continue
+  // fractures arriving from another cylinder (sec. 5.3, branchings). `parent` (a fracture id
+  // of any model sharing this skeleton numbering, or -1) is recorded in the returned element.
+  bool trigger(size_t strip, double theta, int32_t* fe_out = nullptr);
+
+  // When on, every equilibrium solve is followed by a residual check; max_residual() is the
+  // largest relative force residual seen since (the tests' equilibrium invariant).
+  void set_check_equilibrium(bool on) { check_ = on; }
+  double max_residual() const;
+
+  // Fractures that tried to propagate past the first or last strip during the last step.
+  const std::vector<PropagationExit>& exits() const { return exits_; }
+
+ private:
+  void init_strip(size_t j);
+  void grow_strip(size_t j);
+  void update_attachment(size_t j);
+  void break_strip(size_t j);
+  bool break_element(size_t j, size_t i, double f, int32_t* fe_out);
+  double epidermis_stiffness(size_t j, double theta, double rest, uint8_t level) const;
+  double jittered_threshold(size_t j, double theta, StreamRng& rng) const;
+  void assign_new_fracture_ids(size_t j);
+  void measure_fractures();
+  void propagate_from(size_t j);
+  double centre_theta(size_t j, size_t element) const;
+  void refracture(size_t j);
+  void plasticity(size_t j);
+  double width_factor(size_t j, double theta) const;
+
+  StripDomain domain_;
+  StripParams params_;
+  std::vector<Strip> strips_;
+  std::vector<std::vector<double>> cum_;  // per strip: #M+1 cumulative substrate arc length now
+  std::vector<double> epidermis0_;       // per strip: original epidermis length E0
+  // Per strip, for the current step: breaks (created + scripted), scripted breaks, hardened
+  // fracture elements. Summed into stats_ after the parallel phases.
+  std::vector<long long> breaks_, scripted_, hardened_, capped_;
+  FractureSkeleton skeleton_;
+  std::vector<OpeningMode> modes_;
+  StripStats stats_;
+  std::vector<PropagationExit> exits_;
+  // Per fracture id (valid at roots): number of fracture elements and their summed width,
+  // for the Inglis ratio; kept up to date through one step's sweep.
+  std::vector<double> fracture_count_, fracture_width_;
+  int step_ = 0;
+  bool check_ = false;
+  std::vector<double> residual_;  // per strip, when check_
+  void solve(size_t j);
+};
+
+}  // namespace phellem::bark

@@ -1,0 +1,99 @@
+#include "bark/strips/strip_params.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace phellem::bark {
+
+float ParamImage::sample(double u, double v) const {
+  if (values.empty()) return 0.0f;
+  const double fx = (u - std::floor(u)) * width - 0.5, fy = std::clamp(v * height - 0.5, 0.0, double(height - 1));
+  const double flx = std::floor(fx);
+  const int y0 = std::min(int(fy), height - 1), y1 = std::min(y0 + 1, height - 1);
+  const double tx = fx - flx, ty = fy - y0;
+  const int x0 = (int(flx) % width + width) % width, x1 = (x0 + 1) % width;
+  auto at = [&](int x, int y) { return double(values[size_t(y) * width + x]); };
+  return float((1 - ty) * ((1 - tx) * at(x0, y0) + tx * at(x1, y0)) + ty * ((1 - tx) * at(x0, y1) + tx * at(x1, y1)));
+}
+
+double StripParams::fracture_stiffness_at(double rest) const {
+  const auto& c = fracture_stiffness;
+  if (c.size() == 1 || rest <= c.front().x()) return c.front().y();
+  for (size_t i = 1; i < c.size(); ++i)
+    if (rest <= c[i].x()) {
+      const double t = (rest - c[i - 1].x()) / (c[i].x() - c[i - 1].x());
+      return c[i - 1].y() + t * (c[i].y() - c[i - 1].y());
+    }
+  return c.back().y();
+}
+
+double StripParams::max_fracture_stiffness() const {
+  double m = 0;
+  for (const auto& p : fracture_stiffness) m = std::max(m, p.y());
+  return m;
+}
+
+ThresholdRange valid_threshold_range(const StripParams& p, double softest_epidermis) {
+  // Lefebvre & Neyret 2002, sec. 3.2.3: S > 1 + e/l0 · K_f / (K_s + K_f), S < G.
+  const double kf = p.max_fracture_stiffness(), ks = softest_epidermis;
+  const double bound = 1.0 + (p.growth_rate - 1.0) * kf / (ks + kf);
+  ThresholdRange r;
+  r.low = 1.0 + (bound - 1.0) / (1.0 - p.threshold_noise);
+  r.high = p.growth_rate;
+  return r;
+}
+
+std::optional<StripParamError> validate(const StripParams& p) {
+  auto err = [](std::string key, std::string msg) { return StripParamError{std::move(key), std::move(msg)}; };
+  auto positive = [&](const char* key, double v) -> std::optional<StripParamError> {
+    if (!(v > 0) || !std::isfinite(v)) return err(key, "must be a positive number");
+    return std::nullopt;
+  };
+  for (auto [key, v] : {std::pair<const char*, double>{"strip_width", p.strip_width},
+                        {"element_length", p.element_length},
+                        {"stiffness", p.stiffness}})
+    if (auto e = positive(key, v)) return e;
+  if (p.steps < 1 || p.steps > 1000000) return err("steps", "must be an integer in [1, 1000000]");
+  if (!(p.growth_rate > 1.0) || !(p.growth_rate < 2.0))
+    return err("growth_rate", "must be in (1, 2): relative circumference growth per step");
+  if (p.fracture_stiffness.empty()) return err("fracture_stiffness", "needs at least one value");
+  for (size_t i = 0; i < p.fracture_stiffness.size(); ++i) {
+    const auto& c = p.fracture_stiffness[i];
+    if (!(c.y() > 0) || !std::isfinite(c.y()) || !(c.x() >= 0))
+      return err("fracture_stiffness", "points must be [rest length >= 0 (m), stiffness > 0]");
+    if (i > 0 && !(c.x() > p.fracture_stiffness[i - 1].x()))
+      return err("fracture_stiffness", "rest lengths must increase");
+  }
+  if (!(p.attachment >= 0) || !std::isfinite(p.attachment)) return err("attachment", "must be >= 0");
+  if (!(p.threshold_noise >= 0 && p.threshold_noise < 1)) return err("threshold_noise", "must be in [0, 1)");
+  if (!(p.location_jitter >= 0 && p.location_jitter <= 1)) return err("location_jitter", "must be in [0, 1]");
+  if (!(p.weakness_strength >= 0 && p.weakness_strength < 1)) return err("weakness_strength", "must be in [0, 1)");
+  if (auto e = positive("inglis_threshold", p.inglis_threshold)) return e;
+  if (!(p.influence >= 0) || !std::isfinite(p.influence)) return err("influence", "must be >= 0");
+  if (!(p.propagation_jitter_deg >= 0 && p.propagation_jitter_deg < 90))
+    return err("propagation_jitter_deg", "must be in [0, 90)");
+  if (!(p.propagation_tension >= 0 && p.propagation_tension <= 1)) return err("propagation_tension", "must be in [0, 1]");
+  if (!(p.opening_mix.minCoeff() >= 0) || !(p.opening_mix.sum() > 0))
+    return err("opening", "weights must be >= 0 and not all zero");
+  if (!(p.refracture_width >= 0)) return err("refracture_width", "must be >= 0 (0 disables refracture)");
+  if (!(p.refracture_stiffness > 0 && p.refracture_stiffness <= 1)) return err("refracture_stiffness", "must be in (0, 1]");
+  for (const auto& s : p.scripted)
+    if (s.step < 0 || s.step >= p.steps) return err("fractures", "step must be in [0, steps)");
+  const double S = p.S();
+  // The reference element (nominal width, element_length) has stiffness R.
+  const ThresholdRange r = valid_threshold_range(p, p.stiffness * (p.refracture_width > 0 ? p.refracture_stiffness : 1.0));
+  if (!(S > r.low && S <= r.high)) {
+    std::ostringstream m;
+    m.precision(6);
+    m << "S = " << S << " is outside its valid range (" << r.low << ", " << r.high
+      << "] for growth_rate " << p.growth_rate << ", threshold_noise " << p.threshold_noise
+      << " and fracture_stiffness up to " << p.max_fracture_stiffness()
+      << " (Lefebvre & Neyret 2002 sec. 3.2.3: below it broken bark breaks again without end, above it unbroken "
+         "bark never breaks)";
+    return err("threshold", m.str());
+  }
+  return std::nullopt;
+}
+
+}  // namespace phellem::bark

@@ -1,0 +1,106 @@
+// Every user-controllable parameter of the strip model (Lefebvre & Neyret 2002, Figure 3,
+// and sec. 5 for mapped bark). Stiffnesses are relative to the epidermis material stiffness
+// R: only their ratios shape the equilibrium.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bark/strips/strip.h"
+
+namespace phellem::bark {
+
+// A scalar image over the bark's (s, θ) parameter space: u = θ / 2π (columns, periodic),
+// v = s / length (rows). Values in [0, 1].
+struct ParamImage {
+  int width = 0, height = 0;
+  std::vector<float> values;  // #height×#width, row-major
+  bool empty() const { return values.empty(); }
+  float sample(double u, double v) const;  // bilinear, u wraps, v clamps
+};
+
+// A bulge of the dilatation field (sec. 5: "heterogeneous growth", e.g. root flare): extra
+// growth `amount` (relative to the base growth) centred at (s, θ), Gaussian of the given
+// widths along the axis (m) and around the circumference (rad).
+struct DilatationBulge {
+  double s = 0, theta = 0, sigma_s = 0.2, sigma_theta = 0.5, amount = 1.0;
+};
+
+// A fracture triggered by the user (the paper's interactive picking, sec. 4 / Figure 10).
+struct ScriptedFracture {
+  double s = 0;      // metres along the axis (flat samples: metres from the bottom)
+  double theta = 0;  // radians (flat samples: θ = 2π·x / length)
+  int step = 0;
+};
+
+struct StripParams {
+  // Discretization.
+  double strip_width = 0.01;     // w (m): strip spacing along the growth axis
+  double element_length = 0.01;  // initial epidermis element length (m)
+  int steps = 200;               // growth steps
+  // Growth (sec. 3.2.3, 5.2): relative circumference growth per step, G > 1. The tree shape
+  // given in the scene is the final one (the shrinking strategy of sec. 5.2).
+  double growth_rate = 1.005;
+  // Material (sec. 3.2.2, 3.2.5, 5.1).
+  double stiffness = 1.0;  // R
+  // K_f(l0): fracture element stiffness against its rest length l0 (m), piecewise linear;
+  // one point = constant (the paper's default).
+  std::vector<Eigen::Vector2d> fracture_stiffness{{0.0, 0.05}};
+  double attachment = 0.02;  // K_a: attachment to the substrate per reference element
+  // Fracture creation (sec. 3.2.3): threshold S on L / l0, jittered by ±noise on S − 1.
+  std::optional<double> threshold;  // default: growth_rate (the paper's practice)
+  double threshold_noise = 0.5;     // in [0, 1)
+  double location_jitter = 0.6;     // in [0, 1]: spread of the break point inside an element
+  ParamImage weakness;              // optional weakness map (1 = weakest)
+  double weakness_strength = 0.8;   // how far the map lowers S − 1, in [0, 1)
+  // Propagation (sec. 3.2.4): Inglis length-to-width threshold, influence a' of nearby
+  // fractures (weight f(a'·dist/width), a threshold test), angular jitter.
+  double inglis_threshold = 60;
+  double influence = 0.25;
+  double propagation_jitter_deg = 12;
+  // A tip breaks the neighbouring strip only where that strip is still in tension: strain at
+  // least this fraction of the element's own threshold strain. Inglis' iso-strain curves run
+  // parallel to a fracture, so tips do not cut into bark another fracture has relaxed.
+  double propagation_tension = 0.5;
+  // Opening (sec. 3.3, Figure 13): where new material appears; `opening_mix` gives the
+  // probability of each mode [axis, one side, both] per fracture.
+  Eigen::Vector3d opening_mix{1, 0, 0};
+  // Refracture (2002 Figure 9, 2001 sec. 4.1): fracture surface wider than this (m) hardens
+  // into bark of relative stiffness `refracture_stiffness`; 0 disables.
+  double refracture_width = 0;
+  double refracture_stiffness = 0.3;
+  // Heterogeneous growth (sec. 5): dilatation bulges added to the base growth.
+  std::vector<DilatationBulge> dilatation;
+  std::vector<ScriptedFracture> scripted;
+  // Flat samples only: cyclic boundaries around (always on for trees) and along the axis.
+  bool tile_theta = true;
+  bool tile_s = false;
+  uint64_t seed = 1;
+
+  double S() const { return threshold ? *threshold : growth_rate; }
+  double fracture_stiffness_at(double rest) const;
+  double max_fracture_stiffness() const;
+};
+
+// The valid open range of S (sec. 3.2.3): S > 1 + e/l0 · K_f / (K_s + K_f) so that a broken
+// element does not break again, with e/l0 the one-step strain G − 1 of unbroken bark, K_s
+// the softest epidermis element and K_f the stiffest fracture element, widened so that the
+// jittered thresholds 1 + (S − 1)(1 − noise) stay above it; and S ≤ G so that unbroken bark
+// is guaranteed to break (the paper uses S = G and varies the noise).
+struct ThresholdRange {
+  double low = 1, high = 1;
+};
+ThresholdRange valid_threshold_range(const StripParams& p, double softest_epidermis);
+
+// A parameter outside its allowed range: the JSON key (relative to the `bark` object) and
+// what is allowed. Thrown by the model; the scene parser adds file and path.
+struct StripParamError {
+  std::string key, message;
+};
+// First problem found, if any (ranges of every parameter; S against valid_threshold_range
+// with the reference element's stiffness R).
+std::optional<StripParamError> validate(const StripParams& p);
+
+}  // namespace phellem::bark

@@ -1,0 +1,278 @@
+// Strip model (Lefebvre & Neyret 2002): equilibrium, conservation, threshold bounds,
+// determinism, propagation, tileability.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "bark/strips/fracture_field.h"
+#include "bark/strips/strip_equilibrium.h"
+#include "bark/strips/strip_model.h"
+
+using namespace phellem::bark;
+
+namespace {
+
+Strip make_strip(bool cyclic, const std::vector<double>& rest, const std::vector<double>& K, double total,
+                 const std::vector<double>& attach = {}) {
+  Strip s;
+  s.cyclic = cyclic;
+  s.circumference = total;
+  for (size_t i = 0; i < rest.size(); ++i) {
+    Element e;
+    e.rest = rest[i];
+    e.stiffness = K[i];
+    s.elements.push_back(e);
+  }
+  const size_t nodes = cyclic ? rest.size() : rest.size() + 1;
+  for (size_t i = 0; i < nodes; ++i) s.x.push_back(total * double(i) / double(rest.size()));
+  s.anchor = s.x;
+  s.attach = attach.empty() ? std::vector<double>(nodes, 0.0) : attach;
+  return s;
+}
+
+// Small flat sample with quick settings.
+StripParams small_params() {
+  StripParams p;
+  p.steps = 120;
+  p.growth_rate = 1.004;
+  p.strip_width = 0.01;
+  p.element_length = 0.01;
+  p.attachment = 0.2;
+  p.inglis_threshold = 10;
+  p.fracture_stiffness = {{0.0, 0.1}};
+  return p;
+}
+
+StripModel run(const StripParams& p, double w = 0.3, double h = 0.3, bool check = false) {
+  StripModel m(flat_domain(w, h, p), p);
+  m.set_check_equilibrium(check);
+  for (int i = 0; i < p.steps; ++i) m.step();
+  return m;
+}
+
+}  // namespace
+
+TEST(StripEquilibrium, HandComputedThreeElementsWithoutAttachment) {
+  // sec. 3.2.2: K_i e_i equal for all i and Σ e_i = L − Σ l0. K = 1, 2, 4; l0 = 1 each; L = 3.7:
+  // T = 0.7 / (1 + 1/2 + 1/4) = 0.4, e = 0.4, 0.2, 0.1.
+  Strip s = make_strip(false, {1, 1, 1}, {1, 2, 4}, 3.7);
+  solve_equilibrium(s);
+  EXPECT_DOUBLE_EQ(s.x[0], 0.0);
+  EXPECT_NEAR(s.x[1], 1.4, 1e-15);
+  EXPECT_NEAR(s.x[2], 2.6, 1e-15);
+  EXPECT_DOUBLE_EQ(s.x[3], 3.7);
+  for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(element_tension(s, i), 0.4, 1e-15);
+}
+
+TEST(StripEquilibrium, HandComputedThreeElementsWithAttachment) {
+  // Open strip 0 — 3 with l0 = 1, K = 1, interior nodes glued (K_a = 1) at anchors 1.2 and 2.1.
+  // Node 1: (x2 − x1 − 1) − (x1 − 0 − 1) − (x1 − 1.2) = 0 → −3 x1 + x2 = −1.2
+  // Node 2: (3 − x2 − 1) − (x2 − x1 − 1) − (x2 − 2.1) = 0 → x1 − 3 x2 = −5.1
+  // x1 = (3.6 + 5.1) / 8 = 1.0875, x2 = 2.0625.
+  Strip s = make_strip(false, {1, 1, 1}, {1, 1, 1}, 3.0, {0, 1, 1, 0});
+  s.anchor = {0, 1.2, 2.1, 3.0};
+  s.x = s.anchor;
+  solve_equilibrium(s);
+  EXPECT_NEAR(s.x[1], 1.0875, 1e-14);
+  EXPECT_NEAR(s.x[2], 2.0625, 1e-14);
+  EXPECT_LT(equilibrium_residual(s), 1e-12);
+}
+
+TEST(StripEquilibrium, CyclicMatchesDenseSolveOfThePaperEquations) {
+  // sec. 5.1 equations for a cyclic strip, assembled densely and solved by Eigen's LU,
+  // against the O(n) Sherman–Morrison solver.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.2, 2.0);
+  for (int n : {1, 2, 3, 4, 7, 40}) {
+    std::vector<double> rest(static_cast<size_t>(n)), K(static_cast<size_t>(n)), A(static_cast<size_t>(n));
+    double sum = 0;
+    for (int i = 0; i < n; ++i) {
+      rest[size_t(i)] = u(rng);
+      K[size_t(i)] = u(rng);
+      A[size_t(i)] = 0.3 * u(rng);
+      sum += rest[size_t(i)];
+    }
+    const double C = 1.3 * sum;
+    Strip s = make_strip(true, rest, K, C, A);
+    for (double& a : s.anchor) a += 0.05 * u(rng);
+    s.x = s.anchor;
+    solve_equilibrium(s);
+    EXPECT_LT(equilibrium_residual(s), 1e-12) << "n = " << n;
+    if (n < 3) continue;
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+    for (int i = 0; i < n; ++i) {
+      const int l = (i + n - 1) % n, r = (i + 1) % n;
+      // −K_{i-1}(x_i − x_{i−1} − l_{i−1}) + K_i(x_{i+1} − x_i − l_i) − K_a(x_i − a_i) = 0
+      const double wl = i == 0 ? -C : 0.0, wr = i == n - 1 ? C : 0.0;  // unwrapping
+      M(i, i) += -K[size_t(l)] - K[size_t(i)] - A[size_t(i)];
+      M(i, l) += K[size_t(l)];
+      M(i, r) += K[size_t(i)];
+      b(i) += -K[size_t(l)] * (rest[size_t(l)] + wl) + K[size_t(i)] * (rest[size_t(i)] - wr) - A[size_t(i)] * s.anchor[size_t(i)];
+    }
+    const Eigen::VectorXd x = M.lu().solve(b);
+    for (int i = 0; i < n; ++i) EXPECT_NEAR(s.x[size_t(i)], x(i), 1e-11) << "n = " << n << " node " << i;
+  }
+}
+
+TEST(StripEquilibrium, UniformTensionWhenNothingIsAttached) {
+  Strip s = make_strip(true, {0.3, 0.2, 0.4, 0.1}, {1, 3, 0.5, 2}, 1.2);
+  solve_equilibrium(s);
+  const double T = (1.2 - 1.0) / (1 + 1.0 / 3 + 2 + 0.5);
+  for (size_t i = 0; i < 4; ++i) EXPECT_NEAR(element_tension(s, i), T, 1e-14);
+  double mean = 0;
+  for (size_t i = 0; i < 4; ++i) mean += s.x[i] - s.anchor[i];
+  EXPECT_NEAR(mean, 0.0, 1e-14);  // the free rotation is fixed
+}
+
+TEST(StripModel, EveryStripStaysInEquilibriumThroughGrowth) {
+  for (double attachment : {0.0, 0.2}) {
+    StripParams p = small_params();
+    p.attachment = attachment;
+    const StripModel m = run(p, 0.3, 0.3, true);
+    EXPECT_GT(m.stats().created, 0);
+    EXPECT_LT(m.max_residual(), 1e-9) << "attachment " << attachment;
+  }
+  StripParams p = small_params();  // cylinder-like cyclic strips with dilatation
+  p.dilatation.push_back({0.15, 1.0, 0.05, 0.5, 2.0});
+  StripModel m(flat_domain(0.3, 0.3, p), p);
+  m.set_check_equilibrium(true);
+  for (int i = 0; i < p.steps; ++i) m.step();
+  EXPECT_LT(m.max_residual(), 1e-9);
+}
+
+TEST(StripModel, OriginalEpidermisIsConserved) {
+  // The paper's first observation (sec. 3.1): original epidermis is never created or lost.
+  StripParams p = small_params();
+  p.refracture_width = 0.004;  // refracture adds new bark of level 1, never level 0
+  StripModel m(flat_domain(0.3, 0.2, p), p);
+  std::vector<double> before;
+  for (const Strip& s : m.strips()) before.push_back(s.original_epidermis());
+  for (int i = 0; i < p.steps; ++i) m.step();
+  EXPECT_GT(m.stats().created, 0);
+  EXPECT_GT(m.stats().refractured, 0);
+  for (size_t j = 0; j < before.size(); ++j) EXPECT_NEAR(m.strips()[j].original_epidermis(), before[j], 1e-12 * before[j]);
+}
+
+TEST(StripModel, ThresholdOutsideTheValidRangeIsRefusedWithTheRange) {
+  StripParams p = small_params();
+  p.threshold = p.growth_rate + 0.001;  // above G: unbroken bark would never break
+  auto e = validate(p);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->key, "threshold");
+  const ThresholdRange r = valid_threshold_range(p, p.stiffness);
+  std::ostringstream hi;
+  hi << r.high;
+  EXPECT_NE(e->message.find(hi.str()), std::string::npos) << e->message;
+  EXPECT_THROW(StripModel(flat_domain(0.1, 0.1, p), p), StripParamError);
+  // Below the lower bound: soft bark, stiff fractures, a threshold just above 1.
+  p.fracture_stiffness = {{0.0, 5.0}};
+  p.threshold = 1.0 + 1e-6;
+  e = validate(p);
+  ASSERT_TRUE(e);
+  EXPECT_NE(e->message.find("valid range"), std::string::npos);
+  EXPECT_GT(valid_threshold_range(p, p.stiffness).low, *p.threshold);
+}
+
+TEST(StripModel, FracturesPerStepStayBoundedInsideTheValidRange) {
+  for (double noise : {0.0, 0.5, 0.9})
+    for (double kf : {0.02, 0.5, 2.0})
+      for (double g : {1.001, 1.01}) {
+        StripParams p = small_params();
+        p.steps = 40;
+        p.threshold_noise = noise;
+        p.fracture_stiffness = {{0.0, kf}};
+        p.growth_rate = g;
+        const ThresholdRange r = valid_threshold_range(p, p.stiffness);
+        if (r.low >= r.high) {  // no valid S for this noise and stiffness ratio: refused
+          p.threshold = r.high;
+          EXPECT_TRUE(validate(p));
+          continue;
+        }
+        for (double S : {r.low + 0.01 * (r.high - r.low), r.high}) {
+          p.threshold = S;
+          const StripModel m = run(p, 0.2, 0.05);
+          // Every break loop ended by the criterion, never by the safety cap, and no strip
+          // broke into more pieces in one step than its minimum piece length allows
+          // (0.2 m / 0.5 mm = 400).
+          EXPECT_EQ(m.stats().capped, 0) << noise << " " << kf << " " << g << " " << S;
+          EXPECT_LT(m.stats().max_breaks_per_strip_step, 400) << noise << " " << kf << " " << g << " " << S;
+          EXPECT_GT(m.stats().created, 0);
+        }
+      }
+}
+
+TEST(StripModel, BitIdenticalForAnyThreadCountAndSeedDependent) {
+  StripParams p = small_params();
+  auto field = [&](int threads, uint64_t seed) {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    StripParams q = p;
+    q.seed = seed;
+    return rasterize(run(q, 0.3, 0.3), 96, 96, DepthProfile{});
+  };
+  const FractureField a = field(1, 1), b = field(2, 1), c = field(2, 2);
+  EXPECT_EQ(a.opening, b.opening);
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_EQ(a.uv0, b.uv0);
+  EXPECT_EQ(a.fracture_id, b.fracture_id);
+  EXPECT_NE(a.opening, c.opening);  // Figure 16: another instance of the same bark
+  double ma = 0, mc = 0;
+  for (float v : a.opening) ma += v;
+  for (float v : c.opening) mc += v;
+  EXPECT_NEAR(ma / mc, 1.0, 0.1);  // ... with the same statistics
+}
+
+TEST(StripModel, FractureReachingAStripBoundaryContinuesInTheNeighbour) {
+  StripParams p = small_params();
+  p.threshold_noise = 0;
+  p.threshold = p.growth_rate;  // nothing breaks on its own before the scripted fracture
+  p.steps = 3;
+  p.scripted.push_back({0.155, 3.0, 0});
+  p.inglis_threshold = 1e-3;  // any sharp fracture propagates
+  p.propagation_tension = 0;
+  StripModel m(flat_domain(0.3, 0.3, p), p);
+  m.step();
+  ASSERT_EQ(m.stats().scripted, 1);
+  EXPECT_GT(m.stats().propagated, 0);
+  // The scripted fracture's component now spans strips above and below its own.
+  const size_t j = 15;
+  const Strip& s = m.strips()[j];
+  ASSERT_FALSE(s.fractures.empty());
+  const FractureElement& fe = s.fractures[0];
+  EXPECT_GE(fe.up, 0);
+  EXPECT_GE(fe.down, 0);
+  const FractureElement& up = m.strips()[j + 1].fractures[size_t(fe.up)];
+  EXPECT_EQ(m.skeleton().find(up.id), m.skeleton().find(fe.id));
+
+  // The same fracture with an Inglis threshold it cannot reach stays on its strip.
+  p.inglis_threshold = 1e9;
+  StripModel q(flat_domain(0.3, 0.3, p), p);
+  q.step();
+  EXPECT_EQ(q.stats().propagated, 0);
+  EXPECT_LT(q.strips()[j].fractures[0].up, 0);
+}
+
+TEST(FractureFieldTest, TileableSampleWrapsWithoutSeam) {
+  StripParams p = small_params();
+  p.tile_theta = p.tile_s = true;
+  const FractureField f = rasterize(run(p, 0.3, 0.3), 128, 128, DepthProfile{});
+  auto col_diff = [&](int a, int b) {
+    double d = 0;
+    for (int y = 0; y < f.height; ++y) d += std::abs(f.opening[f.index(a, y)] - f.opening[f.index(b, y)]);
+    return d / f.height;
+  };
+  auto row_diff = [&](int a, int b) {
+    double d = 0;
+    for (int x = 0; x < f.width; ++x) d += std::abs(f.opening[f.index(x, a)] - f.opening[f.index(x, b)]);
+    return d / f.width;
+  };
+  double cols = 0, rows = 0;
+  for (int x = 0; x + 1 < f.width; ++x) cols += col_diff(x, x + 1) / (f.width - 1);
+  for (int y = 0; y + 1 < f.height; ++y) rows += row_diff(y, y + 1) / (f.height - 1);
+  ASSERT_GT(cols, 0);
+  // Across the seam the image changes no more than between any two neighbouring columns/rows.
+  EXPECT_LT(col_diff(f.width - 1, 0), 3 * cols);
+  EXPECT_LT(row_diff(f.height - 1, 0), 3 * rows);
+}
