@@ -47,6 +47,7 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   update_attachment(j);
   solve(j);
   ++breaks_[j];
+  tips_[j].push_back(frac.fracture);
   if (fe_out) *fe_out = frac.fracture;
   return true;
 }
@@ -58,6 +59,7 @@ void StripModel::break_strip(size_t j) {
   for (const ScriptedFracture& sf : params_.scripted)
     if (sf.step == step_ && size_t(std::clamp(int(sf.s / domain_.strip_width), 0, int(strips_.size()) - 1)) == j)
       scripted_[j] += trigger(j, sf.theta) ? 1 : 0;
+  if (!over_[j] && scripted_[j] == 0) return;  // nothing exceeded its threshold after growth
   // Figure 8: while an element obeys the criterion L / l0 > S_i, break the most strained one
   // at its weakest point and solve again. S above its lower bound (validated) makes every
   // break relax the element; the cap only guards against floating-point pathologies.

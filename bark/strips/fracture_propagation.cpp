@@ -1,4 +1,6 @@
 // Fracture propagation between strips (Lefebvre & Neyret 2002, sec. 3.2.4 and 5.3).
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,18 +26,14 @@ double StripModel::centre_theta(size_t j, size_t i) const {
 void StripModel::measure_fractures() {
   // Each fracture's element count and summed width: its length is count × strip width, its
   // mean width the Inglis ratio's denominator (sec. 3.2.4: "we used the mean fracture width").
+  // scan_strip listed (root, width) per strip in the parallel phase; sums go in strip order.
   fracture_count_.assign(skeleton_.ids(), 0.0);
   fracture_width_.assign(skeleton_.ids(), 0.0);
-  for (size_t j = 0; j < strips_.size(); ++j) {
-    const Strip& s = strips_[j];
-    for (size_t i = 0; i < s.size(); ++i) {
-      const Element& e = s.elements[i];
-      if (e.kind != ElementKind::Fracture) continue;
-      const size_t r = size_t(skeleton_.find(s.fractures[size_t(e.fracture)].id));
-      fracture_count_[r] += 1;
-      fracture_width_[r] += s.length(i);
+  for (const auto& part : widths_)
+    for (const auto& [r, w] : part) {
+      fracture_count_[size_t(r)] += 1;
+      fracture_width_[size_t(r)] += w;
     }
-  }
 }
 
 void StripModel::propagate_from(size_t j) {
@@ -47,20 +45,27 @@ void StripModel::propagate_from(size_t j) {
     return j > 0 ? long(j - 1) : (domain_.wrap_s ? long(n - 1) : -1);
   };
   StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
-  // Tips of this strip in element order (collected first: the loop does not touch strip j).
+  // Free ends of this strip (listed after growth, plus those made since in the sweep); the
+  // element index of each is looked up only once one passes the Inglis test.
   struct Tip {
     size_t element;
     int32_t fe;
   };
   std::vector<Tip> tips;
-  {
-    const Strip& s = strips_[j];
-    for (size_t i = 0; i < s.size(); ++i) {
-      const Element& e = s.elements[i];
-      if (e.kind != ElementKind::Fracture) continue;
-      const FractureElement& fe = s.fractures[size_t(e.fracture)];
-      if (fe.active && (fe.up < 0 || fe.down < 0)) tips.push_back({i, e.fracture});
+  std::vector<int32_t> where;
+  for (int32_t f : tips_[j]) {
+    const FractureElement& fe = strips_[j].fractures[size_t(f)];
+    if (!fe.active || (fe.up >= 0 && fe.down >= 0)) continue;
+    const size_t root = size_t(skeleton_.find(fe.id));
+    const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
+    if (!(count * ws > params_.inglis_threshold * mean_width)) continue;
+    if (where.empty()) {
+      const Strip& s = strips_[j];
+      where.assign(s.fractures.size(), -1);
+      for (size_t i = 0; i < s.size(); ++i)
+        if (s.elements[i].kind == ElementKind::Fracture) where[size_t(s.elements[i].fracture)] = int32_t(i);
     }
+    tips.push_back({size_t(where[size_t(f)]), f});
   }
   for (const Tip& tip : tips) {
     for (bool up : {true, false}) {
@@ -101,14 +106,8 @@ void StripModel::propagate_from(size_t j) {
         // g's own direction, from its element back in our strip, if it continues there.
         const int32_t back = up ? g.down : g.up;
         base_slope = 0;
-        if (back >= 0) {
-          const Strip& s = strips_[j];
-          for (size_t bi = 0; bi < s.size(); ++bi)
-            if (s.elements[bi].kind == ElementKind::Fracture && s.elements[bi].fracture == back) {
-              base_slope = wrap_angle(centre_theta(ts, gi) - centre_theta(j, bi)) / ws * (up ? 1.0 : -1.0);
-              break;
-            }
-        }
+        if (back >= 0 && size_t(back) < where.size() && where[size_t(back)] >= 0)
+          base_slope = wrap_angle(centre_theta(ts, gi) - centre_theta(j, size_t(where[size_t(back)]))) / ws * (up ? 1.0 : -1.0);
       }
       // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
       const double radius = st.circumference / kTwoPi;

@@ -48,9 +48,11 @@ StripDomain cylinder_domain(const GeneralizedCylinder& c, const StripParams& p, 
     for (int k = 0; k < bins; ++k) {
       const double t0 = kTwoPi * k / bins, t1 = kTwoPi * (k + 1) / bins, tm = 0.5 * (t0 + t1);
       // Arc length of the bin: midpoint rule on |∂P/∂θ| over two halves (radius varies in θ).
-      const Eigen::Vector3d a = c.position(m.s, t0), b = c.position(m.s, tm), e = c.position(m.s, t1);
+      // GeneralizedCylinder takes s normalized to [0, 1].
+      const double L = d.length;
+      const Eigen::Vector3d a = c.position(m.s / L, t0), b = c.position(m.s / L, tm), e = c.position(m.s / L, t1);
       m.bin_length[size_t(k)] = (b - a).norm() + (e - b).norm();
-      m.width[size_t(k)] = (c.position(s1, tm) - c.position(s0, tm)).norm() / (s1 - s0);
+      m.width[size_t(k)] = (c.position(s1 / L, tm) - c.position(s0 / L, tm)).norm() / (s1 - s0);
     }
     fill_exponents(p, m, bins);
   }

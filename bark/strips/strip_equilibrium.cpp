@@ -111,29 +111,49 @@ void solve_equilibrium(Strip& s) {
       s.x[1] = s.anchor[1] + (m00 * r1 - m01 * r0) / det;
       return;
     }
-    w.lower.assign(n, 0);
-    w.diag.assign(n, 0);
-    w.upper.assign(n, 0);
-    w.rhs.assign(n, 0);
-    for (size_t j = 0; j < n; ++j) {
-      const size_t left = (j + n - 1) % n;
-      w.diag[j] = K(left) + K(j) + s.attach[j];
-      w.lower[j] = -K(left);
-      w.upper[j] = -K(j);
-      w.rhs[j] = Ta(long(j)) - Ta(long(j) - 1);
+    // Assembly without modulo: Ta[i] = T^a_i for i = 0..n-1 (element n-1 closes by C).
+    w.z.resize(n);  // T^a
+    for (size_t i = 0; i + 1 < n; ++i) w.z[i] = K(i) * (s.anchor[i + 1] - s.anchor[i] - s.elements[i].rest);
+    w.z[n - 1] = K(n - 1) * (s.anchor[0] + s.circumference - s.anchor[n - 1] - s.elements[n - 1].rest);
+    w.diag.resize(n);
+    w.rhs.resize(n);
+    w.upper.resize(n);  // off-diagonal -K_j between nodes j and j+1
+    for (size_t j = 0; j < n; ++j) w.upper[j] = -K(j);
+    w.diag[0] = K(n - 1) + K(0) + s.attach[0];
+    w.rhs[0] = w.z[0] - w.z[n - 1];
+    for (size_t j = 1; j < n; ++j) {
+      w.diag[j] = K(j - 1) + K(j) + s.attach[j];
+      w.rhs[j] = w.z[j] - w.z[j - 1];
     }
-    // Sherman–Morrison: A = A' + u vᵀ with the corner entries A[0][n-1] = A[n-1][0] = -K_{n-1}.
-    const double alpha = w.upper[n - 1], beta = w.lower[0];  // A[n-1][0], A[0][n-1]
+    // Sherman–Morrison: A = A' + u vᵀ with the corner entries A[0][n-1] = A[n-1][0] = -K_{n-1};
+    // u = (γ, 0, …, 0, α), v = (1, 0, …, 0, β/γ). One elimination of A' serves both right-hand
+    // sides (r and u).
+    const double alpha = w.upper[n - 1], beta = alpha;
     const double gamma = -w.diag[0];
     w.diag[0] -= gamma;
     w.diag[n - 1] -= alpha * beta / gamma;
-    w.z.assign(n, 0);
-    w.z[0] = gamma;
-    w.z[n - 1] = alpha;
-    thomas(w.lower, w.diag, w.upper, w.rhs, w.cprime, n);
-    thomas(w.lower, w.diag, w.upper, w.z, w.cprime, n);
-    const double fact = (w.rhs[0] + beta * w.rhs[n - 1] / gamma) / (1.0 + w.z[0] + beta * w.z[n - 1] / gamma);
-    for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (w.rhs[j] - fact * w.z[j]);
+    w.cprime.resize(n);
+    w.lower.resize(n);  // second right-hand side u
+    std::fill(w.lower.begin(), w.lower.end(), 0.0);
+    w.lower[0] = gamma;
+    w.lower[n - 1] = alpha;
+    double inv = 1.0 / w.diag[0];
+    w.cprime[0] = w.upper[0] * inv;
+    w.rhs[0] *= inv;
+    w.lower[0] *= inv;
+    for (size_t i = 1; i < n; ++i) {
+      const double l = w.upper[i - 1];  // symmetric: sub-diagonal equals the super-diagonal
+      inv = 1.0 / (w.diag[i] - l * w.cprime[i - 1]);
+      w.cprime[i] = w.upper[i] * inv;
+      w.rhs[i] = (w.rhs[i] - l * w.rhs[i - 1]) * inv;
+      w.lower[i] = (w.lower[i] - l * w.lower[i - 1]) * inv;
+    }
+    for (size_t i = n - 1; i-- > 0;) {
+      w.rhs[i] -= w.cprime[i] * w.rhs[i + 1];
+      w.lower[i] -= w.cprime[i] * w.lower[i + 1];
+    }
+    const double fact = (w.rhs[0] + beta * w.rhs[n - 1] / gamma) / (1.0 + w.lower[0] + beta * w.lower[n - 1] / gamma);
+    for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (w.rhs[j] - fact * w.lower[j]);
     return;
   }
   // Open strip: nodes 0 and n are fixed; unknowns are nodes 1..n-1.

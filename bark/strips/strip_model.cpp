@@ -26,6 +26,9 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   hardened_.assign(n, 0);
   capped_.assign(n, 0);
   residual_.assign(n, 0.0);
+  over_.assign(n, 0);
+  tips_.resize(n);
+  widths_.resize(n);
   tbb::parallel_for(size_t(0), n, [&](size_t j) { init_strip(j); });
   // sec. 3.2.3: check S against the softest element actually built (strips narrower than
   // nominal on the concave side of bent limbs are softer).
@@ -195,6 +198,24 @@ void StripModel::grow_strip(size_t j) {
   update_attachment(j);
 }
 
+void StripModel::scan_strip(size_t j) {
+  // Which strips need the break loop, and the free ends propagation will look at.
+  const Strip& s = strips_[j];
+  over_[j] = 0;
+  tips_[j].clear();
+  widths_[j].clear();
+  for (size_t i = 0; i < s.size(); ++i) {
+    const Element& e = s.elements[i];
+    if (e.kind == ElementKind::Epidermis) {
+      over_[j] |= s.length(i) > e.rest * e.threshold;
+    } else {
+      const FractureElement& fe = s.fractures[size_t(e.fracture)];
+      if (fe.active && (fe.up < 0 || fe.down < 0)) tips_[j].push_back(e.fracture);
+      widths_[j].emplace_back(skeleton_.find(fe.id), s.length(i));
+    }
+  }
+}
+
 void StripModel::plasticity(size_t j) {
   // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
   // material fills the fractures, whose rest length becomes their current width.
@@ -213,10 +234,12 @@ void StripModel::step() {
   if (step_ >= params_.steps) return;
   const size_t n = strips_.size();
   exits_.clear();
+  skeleton_.flatten();  // find() is then one lookup in the parallel phase
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 8), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t j = r.begin(); j < r.end(); ++j) {
       grow_strip(j);
       solve(j);
+      scan_strip(j);
     }
   });
   measure_fractures();
@@ -224,7 +247,7 @@ void StripModel::step() {
   for (size_t k = 0; k < n; ++k) {
     const size_t j = upward ? k : n - 1 - k;
     break_strip(j);
-    assign_new_fracture_ids(j);
+    if (breaks_[j] > 0) assign_new_fracture_ids(j);
     propagate_from(j);
   }
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 8), [&](const tbb::blocked_range<size_t>& r) {

@@ -111,6 +111,10 @@ class StripModel {
   int step_ = 0;
   bool check_ = false;
   std::vector<double> residual_;  // per strip, when check_
+  std::vector<char> over_;                   // per strip: an element exceeded its threshold after growth
+  std::vector<std::vector<int32_t>> tips_;   // per strip: fracture elements with a free end this step
+  std::vector<std::vector<std::pair<int32_t, double>>> widths_;  // per strip: (fracture root, width)
+  void scan_strip(size_t j);
   void solve(size_t j);
 };
 
