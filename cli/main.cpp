@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/options.h"
+#include "cli/simulate.h"
 #include "renderer/atomic_file.h"
 #include "renderer/errors.h"
 #include "renderer/image_output.h"
@@ -173,6 +174,7 @@ int main(int argc, char** argv) {
       static tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(*o.threads));
     }
     OIIO::attribute("threads", o.threads.value_or(0));
+    if (o.command == "simulate") return run_simulate(o);
     return o.command == "render" ? run_render(o) : run_turntable(o);
   } catch (const UserError& e) {
     std::cerr << "phellem: error: " << e.what() << "\n";

@@ -26,6 +26,7 @@ std::string usage() {
          "                 [--seed S] [--stats STATS.json] [--view NAME] [--quiet]\n"
          "  phellem turntable SCENE.json --frames N -o DIR/frame_%04d.exr [--png] [--mp4 OUT.mp4]\n"
          "                 [--degrees D] [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
+         "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--threads N] [--quiet]\n"
          "  phellem --help | --version\n"
          "Without SCENE.json, `render` renders the embedded default scene. See README.md and\n"
          "docs/scene-format.md.\n";
@@ -35,7 +36,8 @@ Options parse(const std::vector<std::string>& args) {
   Options o;
   if (args.empty()) bad("", "no command given\n" + usage());
   o.command = args[0];
-  if (o.command != "render" && o.command != "turntable") bad(o.command, "unknown command; allowed: render, turntable\n" + usage());
+  if (o.command != "render" && o.command != "turntable" && o.command != "simulate")
+    bad(o.command, "unknown command; allowed: render, turntable, simulate\n" + usage());
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> std::string {
@@ -72,6 +74,11 @@ Options parse(const std::vector<std::string>& args) {
     else if (!a.empty() && a[0] == '-') bad(a, "unknown option for `" + o.command + "`\n" + usage());
     else if (o.scene.empty()) o.scene = a;
     else bad(a, "more than one scene file given");
+  }
+  if (o.command == "simulate") {
+    if (o.scene.empty()) bad("simulate", "a scene file is required");
+    if (o.exr.empty()) bad("-o", "required for simulate: the output folder");
+    if (o.spp || !o.png.empty()) bad(o.spp ? "--spp" : "--png", "not an option of simulate");
   }
   if (o.command == "turntable") {
     if (o.scene.empty()) bad("turntable", "a scene file is required");

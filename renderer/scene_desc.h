@@ -4,11 +4,13 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "renderer/math.h"
+#include "renderer/strip_bark_desc.h"
 
 namespace phellem {
 
@@ -123,6 +125,7 @@ struct BranchDesc {
 
 struct TreeDesc {
   std::vector<Vec3f> axis;     // spline control points (Catmull-Rom through them)
+  std::shared_ptr<const StripBarkDesc> strip_bark;  // `"bark": {"model": "strips"}`, if any
   std::vector<float> radius;   // radius profile, equally spaced in arc length
   std::vector<BranchDesc> branches;
   DisplacementDesc displacement;

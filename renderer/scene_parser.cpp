@@ -334,7 +334,7 @@ BranchDesc parse_branch(const Ctx& c, JsonObject o, int depth) {
   return b;
 }
 
-TreeDesc parse_tree(const Ctx& c, JsonObject& o) {
+TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed) {
   TreeDesc t;
   auto axis = o.at("axis");
   for (auto& p : axis.array()) t.axis.push_back(p.vec3());
@@ -346,6 +346,7 @@ TreeDesc parse_tree(const Ctx& c, JsonObject& o) {
   if (auto v = o.get("branches"))
     for (auto& e : v->array()) t.branches.push_back(parse_branch(c, e.object(), 1));
   if (auto v = o.get("uv_repeat")) t.uv_repeat = v->positive();
+  if (auto v = o.get("bark")) t.strip_bark = std::make_shared<StripBarkDesc>(parse_strip_bark(v->object(), c.base_dir.string(), seed));
   return t;
 }
 
@@ -392,7 +393,7 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
     if (auto t = o.get("transform")) d.transform.matrix = parse_transform(t->object());
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
-    d.tree = parse_tree(c, o);
+    d.tree = parse_tree(c, o, scene.render.seed);
   } else {
     o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, mesh, tree");
   }

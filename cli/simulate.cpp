@@ -1,0 +1,137 @@
+#include "cli/simulate.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "bark/dressing/field_color.h"
+#include "bark/strips/strip_model.h"
+#include "renderer/atomic_file.h"
+#include "renderer/errors.h"
+#include "renderer/progress.h"
+#include "renderer/scene_parser.h"
+#include "renderer/tree_surface.h"
+
+namespace phellem {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Multi-channel scene-linear EXR of a FractureField; row 0 of the image is the top of the
+// cylinder (s = length), so the image looks like the bark seen from outside, axis up.
+void write_field(const bark::FractureField& f, const std::string& path) {
+  const std::vector<std::string> names = {"color.R", "color.G", "color.B", "opening", "depth", "uv0.u", "uv0.v",
+                                          "fracture_id", "age", "level", "interior"};
+  const int nc = int(names.size());
+  std::vector<float> px(size_t(f.width) * f.height * nc);
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const size_t p = f.index(x, y);
+      float* o = &px[(size_t(f.height - 1 - y) * f.width + x) * nc];
+      const float v[] = {f.color[3 * p], f.color[3 * p + 1], f.color[3 * p + 2], f.opening[p], f.depth[p], f.uv0[2 * p],
+                         f.uv0[2 * p + 1], f.fracture_id[p], f.age[p], f.level[p], f.interior[p]};
+      std::copy(v, v + nc, o);
+    }
+  write_atomically(path, [&](const std::string& tmp) {
+    OIIO::ImageSpec spec(f.width, f.height, nc, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = names;
+    spec.attribute("compression", "zip");
+    spec.attribute("phellem:length_m", float(f.length));
+    spec.attribute("phellem:circumference_m", float(f.circumference));
+    auto out = OIIO::ImageOutput::create(tmp);
+    if (!out || !out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
+      throw UserError(path, "", "cannot write EXR: " + OIIO::geterror());
+  });
+}
+
+}  // namespace
+
+int run_simulate(const cli::Options& o) {
+  const auto t0 = Clock::now();
+  const SceneDesc desc = load_scene_file(o.scene);
+  std::filesystem::path dir(o.exr);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) throw UserError(o.exr, "", "cannot create output folder: " + ec.message());
+  double t_sim = 0, t_dress = 0;
+  long long strips = 0, fractures = 0, created = 0, propagated = 0, merged = 0;
+  int steps = 0, outputs = 0;
+  nlohmann::json files = nlohmann::json::array();
+  for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
+    const ObjectDesc& obj = desc.objects[oi];
+    if (obj.type != ObjectType::Tree || !obj.tree.strip_bark) continue;
+    const StripBarkDesc& bark = *obj.tree.strip_bark;
+    bark::StripParams params = bark.params;
+    if (o.seed) params.seed = *o.seed;
+    const std::vector<TreePart> parts = build_tree(obj.tree, [](const Vec2f&, const Vec3f&) { return 0.0f; });
+    const std::string base = obj.name.empty() ? "tree" + std::to_string(oi) : obj.name;
+    for (size_t k = 0; k < parts.size(); ++k) {
+      const auto ts = Clock::now();
+      bark::StripModel model(bark::cylinder_domain(*parts[k].cylinder, params), params);
+      const std::string part = k == 0 ? "trunk" : "branch" + std::to_string(k);
+      {
+        Progress progress("simulate " + base + " " + part, params.steps, !o.quiet);
+        for (int s = 0; s < params.steps; ++s) {
+          model.step();
+          progress.advance();
+        }
+        progress.finish();
+      }
+      t_sim += since(ts);
+      const auto td = Clock::now();
+      int W = o.width.value_or(bark.field_width), H = o.height.value_or(bark.field_height);
+      if (W == 0) {
+        double C = 0;
+        for (const auto& st : model.strips()) C += st.circumference / double(model.strips().size());
+        C /= model.scale_at_step(model.steps_done());
+        W = 1024;
+        H = std::clamp(int(std::lround(W * model.domain().length / C)), 16, 8192);
+      }
+      bark::FractureField field = bark::rasterize(model, W, H, bark.depth);
+      bark::dress_colors(field, bark::FieldColors{}, bark.depth.max_depth);
+      const std::string file = (dir / (base + "_" + part + ".exr")).string();
+      write_field(field, file);
+      t_dress += since(td);
+      std::set<float> ids(field.fracture_id.begin(), field.fracture_id.end());
+      strips += long(model.strips().size());
+      std::set<int32_t> roots;
+      for (const auto& st : model.strips())
+        for (const auto& fe : st.fractures) roots.insert(model.skeleton().find(fe.id));
+      fractures += long(roots.size());
+      created += model.stats().created + model.stats().scripted;
+      propagated += model.stats().propagated;
+      merged += model.stats().merged;
+      steps = std::max(steps, params.steps);
+      ++outputs;
+      files.push_back(file);
+    }
+  }
+  if (outputs == 0)
+    throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to simulate");
+  if (!o.stats.empty()) {
+    nlohmann::json j = {{"model", "strips"},
+                        {"strips", strips},
+                        {"steps", steps},
+                        {"fractures", fractures},
+                        {"fractures_created", created},
+                        {"propagations", propagated},
+                        {"merges", merged},
+                        {"outputs", files},
+                        {"time_s", {{"total", since(t0)}, {"simulate", t_sim}, {"dress", t_dress}}}};
+    write_atomically(o.stats, [&](const std::string& tmp) {
+      std::ofstream f(tmp);
+      f << j.dump(2) << "\n";
+      if (!f) throw UserError(o.stats, "", "cannot write stats");
+    });
+  }
+  return 0;
+}
+
+}  // namespace phellem

@@ -1,0 +1,24 @@
+// The `"bark": {"model": "strips", ...}` object of a scene tree: strip-model parameters
+// (bark/strips/strip_params.h) from a preset plus overrides, and how the result is dressed.
+#pragma once
+
+#include <string>
+
+#include "bark/strips/fracture_field.h"
+#include "bark/strips/strip_params.h"
+#include "renderer/json_reader.h"
+
+namespace phellem {
+
+struct StripBarkDesc {
+  std::string preset;
+  bark::StripParams params;
+  bark::DepthProfile depth;
+  int field_width = 0, field_height = 0;  // FractureField resolution per cylinder (0: automatic)
+};
+
+// Parses and validates (every StripParamError is reported at its JSON path). `base_dir`
+// resolves the weakness map's file name.
+StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint32_t default_seed);
+
+}  // namespace phellem

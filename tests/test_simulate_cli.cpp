@@ -1,0 +1,108 @@
+// `phellem simulate` with the strip model: documented outputs and errors.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "test_util.h"
+
+namespace phellem {
+namespace {
+
+std::string scene_with_bark(const std::string& bark) {
+  return R"({"render": {"seed": 3}, "objects": [{"type": "tree", "name": "t", "axis": [[0, 0, 0], [0, 0.3, 0]],
+              "radius": [0.05, 0.04], "branches": [{"attach": 0.6, "length": 0.15, "radius": [0.02, 0.015]}],
+              "bark": )" + bark + "}]}";
+}
+
+TEST(SimulateCli, WritesAFractureFieldPerCylinderWithTheDocumentedChannels) {
+  const std::string dir = test::temp_dir("simulate_ok");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, scene_with_bark(R"({"model": "strips", "preset": "fissured", "steps": 60, "growth_rate": 1.01,
+                                              "strip_width": 0.01})"));
+  const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --quiet --stats " + dir + "/stats.json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* part : {"t_trunk.exr", "t_branch1.exr"}) {
+    auto in = OIIO::ImageInput::open(dir + "/out/" + part);
+    ASSERT_TRUE(in) << part;
+    const auto& spec = in->spec();
+    EXPECT_EQ(spec.width, 64);
+    EXPECT_EQ(spec.height, 96);
+    std::vector<std::string> want = {"color.R", "color.G", "color.B", "opening", "depth", "uv0.u", "uv0.v",
+                                     "fracture_id", "age", "level", "interior"};
+    std::vector<std::string> got = spec.channelnames;  // OpenEXR stores channels sorted: compare as sets
+    std::sort(want.begin(), want.end());
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, want);
+    const int c_open = spec.channelindex("opening"), c_depth = spec.channelindex("depth");
+    ASSERT_GE(c_open, 0);
+    ASSERT_GE(c_depth, 0);
+    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
+    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+    double open = 0, depth_in = 0, depth_out = 0;
+    for (size_t p = 0; p < px.size(); p += size_t(spec.nchannels)) {
+      open += px[p + size_t(c_open)];
+      (px[p + size_t(c_open)] > 0 ? depth_in : depth_out) += px[p + size_t(c_depth)];
+    }
+    open /= double(spec.width) * spec.height;
+    // Circumference grew ×1.01^60 = 1.82: fractures must cover a large share, but not all.
+    EXPECT_GT(open, 0.15) << part;
+    EXPECT_LT(open, 0.9) << part;
+    EXPECT_GT(depth_in, 0) << part;
+    EXPECT_EQ(depth_out, 0) << part;  // depth only inside fractures
+  }
+  std::ifstream sf(dir + "/stats.json");
+  const auto j = nlohmann::json::parse(sf);
+  EXPECT_EQ(j["model"], "strips");
+  EXPECT_EQ(j["steps"], 60);
+  EXPECT_GT(j["strips"].get<int>(), 30);
+  EXPECT_GT(j["fractures"].get<int>(), 0);
+  EXPECT_TRUE(j["time_s"].contains("simulate"));
+  EXPECT_TRUE(j["time_s"].contains("dress"));
+}
+
+TEST(SimulateCli, ThresholdOutsideItsRangeIsRefusedWithTheRange) {
+  const std::string dir = test::temp_dir("simulate_threshold");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, scene_with_bark(R"({"model": "strips", "growth_rate": 1.01, "threshold": 1.5})"));
+  const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("phellem: error: " + scene + ": /objects/0/bark/threshold: threshold: S = 1.5 is outside its valid range ("),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(", 1.01]"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/t_trunk.exr"));
+}
+
+TEST(SimulateCli, BadBarkSettingsNameTheirPath) {
+  const std::string dir = test::temp_dir("simulate_bad");
+  const std::string scene = dir + "/scene.json";
+  struct Case {
+    std::string bark, expect;
+  };
+  const std::vector<Case> cases = {
+      {R"({"model": "strips", "preset": "birch"})", "/objects/0/bark/preset: unknown preset \"birch\"; allowed: furrowed, fissured, plated, brittle"},
+      {R"({"model": "waves"})", "/objects/0/bark/model: unknown bark model"},
+      {R"({"model": "strips", "attachmnt": 1})", "/objects/0/bark/attachmnt: unknown key"},
+      {R"({"model": "strips", "threshold_noise": 1.5})", "/objects/0/bark/threshold_noise: threshold_noise: must be in [0, 1)"},
+      {R"({"model": "strips", "weakness_map": "missing.png"})", "/objects/0/bark/weakness_map: file not found"},
+      {R"({"model": "strips", "depth": {"profile": "w"}})", "/objects/0/bark/depth/profile: unknown depth profile"},
+  };
+  for (const Case& c : cases) {
+    test::write_text(scene, scene_with_bark(c.bark));
+    const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --quiet");
+    EXPECT_EQ(r.exit_code, 2) << c.bark;
+    EXPECT_NE(r.output.find(c.expect), std::string::npos) << r.output;
+  }
+  test::write_text(scene, R"({"objects": [{"type": "sphere", "radius": 1}]})");
+  const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("no tree object has a"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace phellem
