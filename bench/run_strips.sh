@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Strip-model simulation and dressing time (README figures): the 1000-strip × 500-step trunk
+# of bench/scenes/strips_trunk_1000x500.json (radius 0.15 m, 5 mm strips), then the scaling
+# table over 250/500/1000/2000 strips. Medians of REPEAT runs (default 3).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+REPEAT=${REPEAT:-3}
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+run() {  # scene, field resolution -> "simulate dress strips fractures" medians
+  local sim=() dress=() s f
+  for r in $(seq "$REPEAT"); do
+    ./build/phellem simulate "$1" -o "$out/fields" --res "$2" --quiet --stats "$out/s.json"
+    sim+=("$(python3 -c "import json;print(json.load(open('$out/s.json'))['time_s']['simulate'])")")
+    dress+=("$(python3 -c "import json;print(json.load(open('$out/s.json'))['time_s']['dress'])")")
+  done
+  s=$(python3 -c "import json;d=json.load(open('$out/s.json'));print(d['strips'], d['fractures'])")
+  echo "$(printf '%s\n' "${sim[@]}" | median) $(printf '%s\n' "${dress[@]}" | median) $s"
+}
+echo "benchmark scene: 1000 strips x 500 steps, FractureField 4096x4096"
+read -r sim dress strips fr <<<"$(run bench/scenes/strips_trunk_1000x500.json 4096x4096)"
+echo "  simulate ${sim} s, dress ${dress} s (${strips} strips, ${fr} fractures)"
+echo
+echo "strips  steps  fractures  simulate_s  us_per_strip_step"
+for n in 250 500 1000 2000; do
+  python3 - "$n" "$out/scene_$n.json" <<'PY'
+import json, sys
+n, path = int(sys.argv[1]), sys.argv[2]
+s = json.load(open("bench/scenes/strips_trunk_1000x500.json"))
+s["objects"][0]["axis"] = [[0, 0, 0], [0, n * 0.005, 0]]
+json.dump(s, open(path, "w"))
+PY
+  read -r sim dress strips fr <<<"$(run "$out/scene_$n.json" 256x256)"
+  python3 -c "print(f'{$strips:6d}  500  {$fr:9d}  {$sim:10.3f}  {1e6*$sim/($strips*500):.2f}')"
+done
