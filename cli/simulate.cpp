@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
 #include "bark/dressing/field_color.h"
@@ -74,7 +75,15 @@ int run_simulate(const cli::Options& o) {
     const std::string base = obj.name.empty() ? "tree" + std::to_string(oi) : obj.name;
     for (size_t k = 0; k < parts.size(); ++k) {
       const auto ts = Clock::now();
-      bark::StripModel model(bark::cylinder_domain(*parts[k].cylinder, params), params);
+      // The model re-checks S against the softest element it actually built (strips narrower
+      // than nominal on bent limbs are softer): report that at the scene's JSON path.
+      std::optional<bark::StripModel> built;
+      try {
+        built.emplace(bark::cylinder_domain(*parts[k].cylinder, params), params);
+      } catch (const bark::StripParamError& e) {
+        throw UserError(o.scene, "/objects/" + std::to_string(oi) + "/bark/" + e.key, e.key + ": " + e.message);
+      }
+      bark::StripModel& model = *built;
       const std::string part = k == 0 ? "trunk" : "branch" + std::to_string(k);
       {
         Progress progress("simulate " + base + " " + part, params.steps, !o.quiet);
