@@ -19,8 +19,8 @@ struct Span {
 };
 
 struct StripSpans {
-  std::vector<Span> spans;                   // by fracture element index (active ones valid)
-  std::vector<char> valid;
+  std::vector<Span> spans;  // by fracture element index
+  std::vector<char> valid;  // 1 where the fracture element is still open (not hardened)
 };
 
 }  // namespace
@@ -118,7 +118,7 @@ FractureField rasterize(const StripModel& model, int W, int H, const DepthProfil
         const double frac = L > 0 ? std::clamp(off / L, 0.0, 1.0) : 0.0;
         const double m = e.kind == ElementKind::Epidermis && e.level == 0 ? e.material + frac * e.rest / E0 : e.material;
         out[size_t(x)] = m - std::floor(m);
-        lvl[size_t(x)] = e.kind == ElementKind::Epidermis ? float(e.level) : float(e.level);
+        lvl[size_t(x)] = float(e.level);
       }
     };
     std::vector<double> m0, m1;
@@ -158,7 +158,7 @@ FractureField rasterize(const StripModel& model, int W, int H, const DepthProfil
           f.level[p] = sp.level;
           f.interior[p] = float(sp.mode == OpeningMode::Axis ? 1.0 - q : sp.mode == OpeningMode::OneSide ? a : q);
         }
-        f.opening[p] = float(std::min(1.0, std::max(double(f.opening[p]), cover) + 0.0));
+        f.opening[p] = float(std::min(1.0, std::max(double(f.opening[p]), cover)));
         f.depth[p] = std::max(f.depth[p], float(depth_scale * profile.evaluate(q)));
       }
     };

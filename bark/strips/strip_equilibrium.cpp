@@ -182,7 +182,7 @@ void solve_equilibrium(Strip& s) {
 double equilibrium_residual(const Strip& s) {
   const size_t n = s.size();
   double worst = 0, scale = 1e-300;
-  const size_t first = s.cyclic ? 0 : 1, last = s.cyclic ? n : n;  // free nodes [first, last)
+  const size_t first = s.cyclic ? 0 : 1, last = n;  // free nodes [first, last)
   for (size_t i = 0; i < n; ++i) scale = std::max(scale, std::abs(element_tension(s, i)));
   for (size_t j = first; j < last; ++j) {
     const size_t left = s.cyclic ? (j + n - 1) % n : j - 1;

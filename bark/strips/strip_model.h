@@ -64,9 +64,9 @@ class StripModel {
   size_t element_at(size_t j, double x) const;
 
   // Starts a fracture at (strip, θ) in the current state, linked to nothing; returns false if
-  // the location is already fractured. Used for scripted fractures and by a tree to continue
-  // fractures arriving from another cylinder (sec. 5.3, branchings). `parent` (a fracture id
-  // of any model sharing this skeleton numbering, or -1) is recorded in the returned element.
+  // the location is already fractured. Used for scripted fractures, and meant for a tree to
+  // continue fractures arriving from another cylinder (sec. 5.3, branchings). `fe_out`
+  // receives the new fracture element's index in the strip.
   bool trigger(size_t strip, double theta, int32_t* fe_out = nullptr);
 
   // When on, every equilibrium solve is followed by a residual check; max_residual() is the
