@@ -108,13 +108,12 @@ int run_simulate(const cli::Options& o) {
       const std::string file = (dir / (base + "_" + part + ".exr")).string();
       write_field(field, file);
       t_dress += since(td);
-      std::set<float> ids(field.fracture_id.begin(), field.fracture_id.end());
       strips += long(model.strips().size());
       std::set<int32_t> roots;
       for (const auto& st : model.strips())
         for (const auto& fe : st.fractures) roots.insert(model.skeleton().find(fe.id));
       fractures += long(roots.size());
-      created += model.stats().created + model.stats().scripted;
+      created += model.stats().created;  // scripted breaks included
       propagated += model.stats().propagated;
       merged += model.stats().merged;
       steps = std::max(steps, params.steps);

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "bark/strips/presets.h"
+#include "renderer/json_reader.h"
 
 namespace phellem {
 

@@ -6,9 +6,10 @@
 
 #include "bark/strips/fracture_field.h"
 #include "bark/strips/strip_params.h"
-#include "renderer/json_reader.h"
 
 namespace phellem {
+
+class JsonObject;
 
 struct StripBarkDesc {
   std::string preset;

@@ -16,6 +16,7 @@ constexpr double kMinPiece = 0.05;
 }  // namespace
 
 bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
+  // The fracture element ends up at index i + 1 (callers rely on it).
   // Figure 6: a split element of stiffness K becomes pieces f·l0 and (1 − f)·l0 of stiffness
   // K/f and K/(1 − f) (still K in series); a zero-rest-length fracture element opens between.
   Strip& s = strips_[j];

@@ -181,7 +181,7 @@ FractureField rasterize(const StripModel& model, int W, int H, const DepthProfil
       for (size_t k = 0; k < s0.fractures.size(); ++k) {
         if (!sp0.valid[k]) continue;
         const int32_t up = s0.fractures[k].up;
-        if (up >= 0 && valid_strip(j1) && spans[size_t(j1)].valid[size_t(up)] && (dom.wrap_s || j1 == j0 + 1))
+        if (up >= 0 && valid_strip(j1) && spans[size_t(j1)].valid[size_t(up)])
           lerp_span(sp0.spans[k], spans[size_t(j1)].spans[size_t(up)], t);
         else
           tip(sp0.spans[k], t);
@@ -193,7 +193,7 @@ FractureField rasterize(const StripModel& model, int W, int H, const DepthProfil
       for (size_t k = 0; k < s1.fractures.size(); ++k) {
         if (!sp1.valid[k]) continue;
         const int32_t down = s1.fractures[k].down;
-        const bool linked = down >= 0 && valid_strip(j0) && spans[size_t(j0)].valid[size_t(down)] && (dom.wrap_s || j1 == j0 + 1);
+        const bool linked = down >= 0 && valid_strip(j0) && spans[size_t(j0)].valid[size_t(down)];
         if (!linked) {
           tip(sp1.spans[k], 1.0 - t);
         } else if (strips[size_t(j0)].fractures[size_t(down)].up != int32_t(k)) {

@@ -45,6 +45,12 @@ void StripModel::propagate_from(size_t j) {
     return j > 0 ? long(j - 1) : (domain_.wrap_s ? long(n - 1) : -1);
   };
   StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
+  // Inglis: the stress at a tip grows with the fracture's length-to-width ratio (mean width).
+  auto sharp = [&](int32_t id) {
+    const size_t root = size_t(skeleton_.find(id));
+    const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
+    return count * ws > params_.inglis_threshold * mean_width;
+  };
   // Free ends of this strip (listed after growth, plus those made since in the sweep); the
   // element index of each is looked up only once one passes the Inglis test.
   struct Tip {
@@ -55,10 +61,7 @@ void StripModel::propagate_from(size_t j) {
   std::vector<int32_t> where;
   for (int32_t f : tips_[j]) {
     const FractureElement& fe = strips_[j].fractures[size_t(f)];
-    if (!fe.active || (fe.up >= 0 && fe.down >= 0)) continue;
-    const size_t root = size_t(skeleton_.find(fe.id));
-    const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
-    if (!(count * ws > params_.inglis_threshold * mean_width)) continue;
+    if (!fe.active || (fe.up >= 0 && fe.down >= 0) || !sharp(fe.id)) continue;
     if (where.empty()) {
       const Strip& s = strips_[j];
       where.assign(s.fractures.size(), -1);
@@ -72,10 +75,9 @@ void StripModel::propagate_from(size_t j) {
       FractureElement& src = strips_[j].fractures[size_t(tip.fe)];
       if ((up ? src.up : src.down) >= 0) continue;
       const double u1 = rng.symmetric();  // drawn for every tip side: stable streams
+      // Tested again: a merge earlier in this loop may have changed the fracture.
+      if (!sharp(src.id)) continue;
       const size_t root = size_t(skeleton_.find(src.id));
-      const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
-      // Inglis: the stress at a tip grows with the fracture's length-to-width ratio.
-      if (!(count * ws > params_.inglis_threshold * mean_width)) continue;
       const double theta = centre_theta(j, tip.element);
       const long t = neighbour(up);
       if (t < 0) {
@@ -141,11 +143,7 @@ void StripModel::propagate_from(size_t j) {
         ++stats_.propagated;
         const size_t r = size_t(skeleton_.find(src.id));
         fracture_count_[r] += 1;
-        for (size_t gi = 0; gi < st.size(); ++gi)
-          if (st.elements[gi].kind == ElementKind::Fracture && st.elements[gi].fracture == g) {
-            fracture_width_[r] += st.length(gi);
-            break;
-          }
+        fracture_width_[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
       }
       FractureElement& src2 = strips_[j].fractures[size_t(tip.fe)];
       FractureElement& ge2 = st.fractures[size_t(g)];

@@ -9,7 +9,8 @@ namespace phellem::bark {
 namespace {
 
 struct Scratch {
-  std::vector<double> lower, diag, upper, rhs, z, cprime;
+  std::vector<double> lower, diag, upper, rhs, cprime;  // tridiagonal system and elimination
+  std::vector<double> ta, u;  // cyclic strips: anchor tensions T^a_i, Sherman–Morrison vector u
 };
 
 // Thomas algorithm for a tridiagonal system (lower[0] and upper[n-1] unused); the matrix is
@@ -112,18 +113,18 @@ void solve_equilibrium(Strip& s) {
       return;
     }
     // Assembly without modulo: Ta[i] = T^a_i for i = 0..n-1 (element n-1 closes by C).
-    w.z.resize(n);  // T^a
-    for (size_t i = 0; i + 1 < n; ++i) w.z[i] = K(i) * (s.anchor[i + 1] - s.anchor[i] - s.elements[i].rest);
-    w.z[n - 1] = K(n - 1) * (s.anchor[0] + s.circumference - s.anchor[n - 1] - s.elements[n - 1].rest);
+    w.ta.resize(n);  // T^a_i
+    for (size_t i = 0; i + 1 < n; ++i) w.ta[i] = K(i) * (s.anchor[i + 1] - s.anchor[i] - s.elements[i].rest);
+    w.ta[n - 1] = K(n - 1) * (s.anchor[0] + s.circumference - s.anchor[n - 1] - s.elements[n - 1].rest);
     w.diag.resize(n);
     w.rhs.resize(n);
     w.upper.resize(n);  // off-diagonal -K_j between nodes j and j+1
     for (size_t j = 0; j < n; ++j) w.upper[j] = -K(j);
     w.diag[0] = K(n - 1) + K(0) + s.attach[0];
-    w.rhs[0] = w.z[0] - w.z[n - 1];
+    w.rhs[0] = w.ta[0] - w.ta[n - 1];
     for (size_t j = 1; j < n; ++j) {
       w.diag[j] = K(j - 1) + K(j) + s.attach[j];
-      w.rhs[j] = w.z[j] - w.z[j - 1];
+      w.rhs[j] = w.ta[j] - w.ta[j - 1];
     }
     // Sherman–Morrison: A = A' + u vᵀ with the corner entries A[0][n-1] = A[n-1][0] = -K_{n-1};
     // u = (γ, 0, …, 0, α), v = (1, 0, …, 0, β/γ). One elimination of A' serves both right-hand
@@ -133,27 +134,27 @@ void solve_equilibrium(Strip& s) {
     w.diag[0] -= gamma;
     w.diag[n - 1] -= alpha * beta / gamma;
     w.cprime.resize(n);
-    w.lower.resize(n);  // second right-hand side u
-    std::fill(w.lower.begin(), w.lower.end(), 0.0);
-    w.lower[0] = gamma;
-    w.lower[n - 1] = alpha;
+    w.u.resize(n);  // second right-hand side u
+    std::fill(w.u.begin(), w.u.end(), 0.0);
+    w.u[0] = gamma;
+    w.u[n - 1] = alpha;
     double inv = 1.0 / w.diag[0];
     w.cprime[0] = w.upper[0] * inv;
     w.rhs[0] *= inv;
-    w.lower[0] *= inv;
+    w.u[0] *= inv;
     for (size_t i = 1; i < n; ++i) {
       const double l = w.upper[i - 1];  // symmetric: sub-diagonal equals the super-diagonal
       inv = 1.0 / (w.diag[i] - l * w.cprime[i - 1]);
       w.cprime[i] = w.upper[i] * inv;
       w.rhs[i] = (w.rhs[i] - l * w.rhs[i - 1]) * inv;
-      w.lower[i] = (w.lower[i] - l * w.lower[i - 1]) * inv;
+      w.u[i] = (w.u[i] - l * w.u[i - 1]) * inv;
     }
     for (size_t i = n - 1; i-- > 0;) {
       w.rhs[i] -= w.cprime[i] * w.rhs[i + 1];
-      w.lower[i] -= w.cprime[i] * w.lower[i + 1];
+      w.u[i] -= w.cprime[i] * w.u[i + 1];
     }
-    const double fact = (w.rhs[0] + beta * w.rhs[n - 1] / gamma) / (1.0 + w.lower[0] + beta * w.lower[n - 1] / gamma);
-    for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (w.rhs[j] - fact * w.lower[j]);
+    const double fact = (w.rhs[0] + beta * w.rhs[n - 1] / gamma) / (1.0 + w.u[0] + beta * w.u[n - 1] / gamma);
+    for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (w.rhs[j] - fact * w.u[j]);
     return;
   }
   // Open strip: nodes 0 and n are fixed; unknowns are nodes 1..n-1.

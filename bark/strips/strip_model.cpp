@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "bark/strips/strip_equilibrium.h"
 
@@ -36,14 +35,7 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   for (const Strip& s : strips_)
     for (const Element& e : s.elements) softest = std::min(softest, e.stiffness);
   const ThresholdRange r = valid_threshold_range(params_, softest);
-  if (!(params_.S() > r.low)) {
-    std::ostringstream m;
-    m.precision(6);
-    m << "S = " << params_.S() << " is outside its valid range (" << r.low << ", " << r.high
-      << "] on this surface (its softest epidermis element has stiffness " << softest
-      << "; Lefebvre & Neyret 2002 sec. 3.2.3)";
-    throw StripParamError{"threshold", m.str()};
-  }
+  if (!(params_.S() > r.low)) throw threshold_error(params_, r, softest);
 }
 
 void StripModel::solve(size_t j) {

@@ -25,6 +25,7 @@
 namespace phellem::bark {
 
 struct StripStats {
+  // created counts every break that started a fracture, scripted ones included.
   long long created = 0, scripted = 0, propagated = 0, merged = 0, refractured = 0;
   long long max_breaks_per_strip_step = 0;  // largest number of breaks in one strip in one step
   long long capped = 0;  // break loops stopped by the safety cap instead of the criterion (should stay 0)

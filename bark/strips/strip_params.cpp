@@ -82,18 +82,21 @@ std::optional<StripParamError> validate(const StripParams& p) {
     if (s.step < 0 || s.step >= p.steps) return err("fractures", "step must be in [0, steps)");
   const double S = p.S();
   // The reference element (nominal width, element_length) has stiffness R.
-  const ThresholdRange r = valid_threshold_range(p, p.stiffness * (p.refracture_width > 0 ? p.refracture_stiffness : 1.0));
-  if (!(S > r.low && S <= r.high)) {
-    std::ostringstream m;
-    m.precision(6);
-    m << "S = " << S << " is outside its valid range (" << r.low << ", " << r.high
-      << "] for growth_rate " << p.growth_rate << ", threshold_noise " << p.threshold_noise
-      << " and fracture_stiffness up to " << p.max_fracture_stiffness()
-      << " (Lefebvre & Neyret 2002 sec. 3.2.3: below it broken bark breaks again without end, above it unbroken "
-         "bark never breaks)";
-    return err("threshold", m.str());
-  }
+  const double softest = p.stiffness * (p.refracture_width > 0 ? p.refracture_stiffness : 1.0);
+  const ThresholdRange r = valid_threshold_range(p, softest);
+  if (!(S > r.low && S <= r.high)) return threshold_error(p, r, softest);
   return std::nullopt;
+}
+
+StripParamError threshold_error(const StripParams& p, const ThresholdRange& r, double softest_epidermis) {
+  std::ostringstream m;
+  m.precision(6);
+  m << "S = " << p.S() << " is outside its valid range (" << r.low << ", " << r.high << "] for growth_rate "
+    << p.growth_rate << ", threshold_noise " << p.threshold_noise << ", fracture_stiffness up to "
+    << p.max_fracture_stiffness() << " and softest epidermis element " << softest_epidermis
+    << " (Lefebvre & Neyret 2002 sec. 3.2.3: below it broken bark breaks again without end, above it unbroken "
+       "bark never breaks)";
+  return {"threshold", m.str()};
 }
 
 }  // namespace phellem::bark

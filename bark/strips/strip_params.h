@@ -99,6 +99,9 @@ ThresholdRange valid_threshold_range(const StripParams& p, double softest_epider
 struct StripParamError {
   std::string key, message;
 };
+// The error for an S outside `r`, naming the range and what it was computed from.
+StripParamError threshold_error(const StripParams& p, const ThresholdRange& r, double softest_epidermis);
+
 // First problem found, if any (ranges of every parameter; S against valid_threshold_range
 // with the reference element's stiffness R).
 std::optional<StripParamError> validate(const StripParams& p);
