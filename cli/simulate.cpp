@@ -7,16 +7,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <set>
 
-#include "bark/dressing/field_color.h"
-#include "bark/strips/strip_model.h"
 #include "renderer/atomic_file.h"
 #include "renderer/errors.h"
 #include "renderer/progress.h"
 #include "renderer/scene_parser.h"
-#include "renderer/tree_surface.h"
+#include "renderer/strip_bark_tree.h"
 
 namespace phellem {
 
@@ -65,61 +62,35 @@ int run_simulate(const cli::Options& o) {
   long long strips = 0, fractures = 0, created = 0, propagated = 0, merged = 0;
   int steps = 0, outputs = 0;
   nlohmann::json files = nlohmann::json::array();
+  long long crossings = 0;
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
     const ObjectDesc& obj = desc.objects[oi];
     if (obj.type != ObjectType::Tree || !obj.tree.strip_bark) continue;
-    const StripBarkDesc& bark = *obj.tree.strip_bark;
-    bark::StripParams params = bark.params;
-    if (o.seed) params.seed = *o.seed;
-    const std::vector<TreePart> parts = build_tree(obj.tree, [](const Vec2f&, const Vec3f&) { return 0.0f; });
+    const auto ts = Clock::now();
+    TreeStripSimulation sim(obj, oi, o.seed);
+    sim.run(!o.quiet);
+    t_sim += since(ts);
     const std::string base = obj.name.empty() ? "tree" + std::to_string(oi) : obj.name;
-    for (size_t k = 0; k < parts.size(); ++k) {
-      const auto ts = Clock::now();
-      // The model re-checks S against the softest element it actually built (strips narrower
-      // than nominal on bent limbs are softer): report that at the scene's JSON path.
-      std::optional<bark::StripModel> built;
-      try {
-        built.emplace(bark::cylinder_domain(*parts[k].cylinder, params), params);
-      } catch (const bark::StripParamError& e) {
-        throw UserError(o.scene, "/objects/" + std::to_string(oi) + "/bark/" + e.key, e.key + ": " + e.message);
-      }
-      bark::StripModel& model = *built;
-      const std::string part = k == 0 ? "trunk" : "branch" + std::to_string(k);
-      {
-        Progress progress("simulate " + base + " " + part, params.steps, !o.quiet);
-        for (int s = 0; s < params.steps; ++s) {
-          model.step();
-          progress.advance();
-        }
-        progress.finish();
-      }
-      t_sim += since(ts);
+    for (size_t k = 0; k < sim.parts(); ++k) {
       const auto td = Clock::now();
-      int W = o.width.value_or(bark.field_width), H = o.height.value_or(bark.field_height);
-      if (W == 0) {
-        double C = 0;
-        for (const auto& st : model.strips()) C += st.circumference / double(model.strips().size());
-        C /= model.scale_at_step(model.steps_done());
-        W = 1024;
-        H = std::clamp(int(std::lround(W * model.domain().length / C)), 16, 8192);
-      }
-      bark::FractureField field = bark::rasterize(model, W, H, bark.depth);
-      bark::dress_colors(field, bark::FieldColors{}, bark.depth.max_depth);
-      const std::string file = (dir / (base + "_" + part + ".exr")).string();
+      const bark::FractureField field = sim.field(k, o.width.value_or(0), o.height.value_or(0));
+      const std::string file = (dir / (base + "_" + sim.part_name(k) + ".exr")).string();
       write_field(field, file);
       t_dress += since(td);
+      const bark::StripModel& model = sim.bark().model(k);
       strips += long(model.strips().size());
       std::set<int32_t> roots;
       for (const auto& st : model.strips())
         for (const auto& fe : st.fractures) roots.insert(model.skeleton().find(fe.id));
       fractures += long(roots.size());
-      created += model.stats().created;  // scripted breaks included
+      created += model.stats().created;  // scripted breaks and arrivals included
       propagated += model.stats().propagated;
       merged += model.stats().merged;
-      steps = std::max(steps, params.steps);
+      steps = std::max(steps, model.steps_total());
       ++outputs;
       files.push_back(file);
     }
+    crossings += long(sim.bark().crossings().size());
   }
   if (outputs == 0)
     throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to simulate");
@@ -131,6 +102,7 @@ int run_simulate(const cli::Options& o) {
                         {"fractures_created", created},
                         {"propagations", propagated},
                         {"merges", merged},
+                        {"junction_crossings", crossings},
                         {"outputs", files},
                         {"time_s", {{"total", since(t0)}, {"simulate", t_sim}, {"dress", t_dress}}}};
     write_atomically(o.stats, [&](const std::string& tmp) {

@@ -14,7 +14,7 @@ struct Film {
   std::vector<float> depth;      // Z: distance along the camera ray (0 where nothing is hit)
   std::vector<float> position;   // XYZ world position
   std::vector<float> object_id;  // id: 1-based object index of the first sample (0: none)
-  std::vector<float> crack;      // mask, depth (reserved for the bark models)
+  std::vector<float> crack;      // bark fracture coverage and normalized depth (0 off bark)
 
   Film() = default;
   Film(int w, int h)

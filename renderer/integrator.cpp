@@ -24,6 +24,7 @@ struct FirstHit {
   Vec3f normal = Vec3f::Zero(), position = Vec3f::Zero();
   float depth = 0;
   int object_id = 0;
+  float crack_mask = 0, crack_depth = 0;
 };
 
 // A reflection must leave on the side it arrived on, a transmission on the other, judged by
@@ -59,12 +60,14 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     // Texture filter width: the pixel's footprint at the hit (a ray cone, widened after
     // the first bounce where the lobe spreads the cone).
     const float cone = pixel_angle * (depth == 0 ? 1.0f : 8.0f);
-    const ShadingInput in{hit.uv, hit.t * cone * hit.uv_per_metre, depth == 0};
+    const ShadingInput in{hit.uv, hit.t * cone * hit.uv_per_metre, depth == 0, hit.bark ? &hit.bark_albedo : nullptr};
     if (depth == 0) {
       first->hit = true;
       first->position = hit.p;
       first->depth = hit.t;
       first->object_id = hit.object_id;
+      first->crack_mask = hit.crack_mask;
+      first->crack_depth = hit.crack_depth;
     }
     if (mat.emissive()) {
       // Two-sided emitter.
@@ -174,7 +177,7 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
       for (int x = x0; x < std::min(x0 + kTile, width); ++x) {
         Color sum = Color::Zero(), albedo = Color::Zero();
         Vec3f normal = Vec3f::Zero(), position = Vec3f::Zero();
-        float depth = 0, coverage = 0;
+        float depth = 0, coverage = 0, crack_mask = 0, crack_depth = 0;
         int object_id = 0;
         const uint32_t pixel_seed = Sampler::hash_pixel(uint32_t(x), uint32_t(y), s.seed);
         for (int i = 0; i < s.spp; ++i) {
@@ -192,6 +195,8 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
             normal += first.normal;
             position += first.position;
             depth += first.depth;
+            crack_mask += first.crack_mask;
+            crack_depth += first.crack_depth;
           }
           if (i == 0) object_id = first.object_id;
         }
@@ -206,6 +211,8 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
         const Vec3f n = normal.squaredNorm() > 0 ? Vec3f(normal.normalized()) : Vec3f::Zero();
         for (int c = 0; c < 3; ++c) film.normal[p * 3 + c] = n[c];
         film.depth[p] = coverage > 0 ? depth / coverage : 0.0f;
+        film.crack[p * 2] = crack_mask * inv;  // coverage-weighted like the albedo
+        film.crack[p * 2 + 1] = coverage > 0 ? crack_depth / coverage : 0.0f;
         film.object_id[p] = float(object_id);
       }
     rays += tile_rays;

@@ -20,7 +20,8 @@ Material compile_material(const MaterialDesc& d, TextureStore& textures) {
 BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInput& in, Color* albedo) {
   BSDF b;
   Color base = m.base;
-  if (m.base_tex >= 0) base *= tex.rgb(m.base_tex, in.uv, in.footprint, in.primary);
+  if (in.base_override) base = *in.base_override;
+  else if (m.base_tex >= 0) base *= tex.rgb(m.base_tex, in.uv, in.footprint, in.primary);
   base = base.max(0.0f).min(1.0f);
   float rough = m.roughness;
   if (m.rough_tex >= 0) rough = std::clamp(rough * tex.scalar(m.rough_tex, in.uv, in.footprint, in.primary), 0.0f, 1.0f);

@@ -24,6 +24,7 @@ struct ShadingInput {
   Vec2f uv;
   float footprint;       // texture filter width in uv units
   bool primary = true;   // camera-ray hit: full-quality (bicubic) texture filtering
+  const Color* base_override = nullptr;  // dressed bark albedo replacing the base colour
 };
 
 BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInput& in, Color* albedo);

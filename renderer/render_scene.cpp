@@ -10,6 +10,7 @@
 #include "renderer/displacement.h"
 #include "renderer/errors.h"
 #include "renderer/mesh_io.h"
+#include "renderer/strip_bark_tree.h"
 #include "renderer/tessellation.h"
 #include "renderer/tree_surface.h"
 
@@ -31,6 +32,7 @@ struct RenderScene::Shape {
   int material = 0;
   int object_id = 0;
   int area_first = -1;
+  std::shared_ptr<const bark::BarkSurface> bark;  // strip bark of a tree part
 };
 struct RenderScene::Prototype {
   ScenePtr scene;
@@ -132,7 +134,7 @@ RenderScene::~RenderScene() {
 }
 
 void RenderScene::add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::shared_ptr<const MeshData> mesh, int material,
-                              int object_id, int area_first) {
+                              int object_id, int area_first, std::shared_ptr<const bark::BarkSurface> bark) {
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->positions.data(), 0, sizeof(Vec3f),
                              mesh->positions.size());
@@ -147,11 +149,14 @@ void RenderScene::add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::s
   s.material = material;
   s.object_id = object_id;
   s.area_first = area_first;
-  stats_.geometry_bytes += s.mesh->memory_bytes();
+  s.bark = std::move(bark);
+  stats_.geometry_bytes += s.mesh->memory_bytes() + (s.bark ? s.bark->memory_bytes() : 0);
 }
 
-RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, int width, int height)
+RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, int width, int height, SceneBuildOptions* options)
     : textures_(std::make_unique<TextureStore>()) {
+  SceneBuildOptions defaults;
+  SceneBuildOptions& opts = options ? *options : defaults;
   embree_errors_ = std::make_shared<EmbreeErrors>();
   embree_bytes_now_ = std::make_shared<std::atomic<long long>>(0);
   embree_bytes_peak_ = std::make_shared<std::atomic<long long>>(0);
@@ -187,12 +192,12 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
                            materials_[material].emission});
     return first;
   };
-  auto add_top = [&](MeshData m, int material, int object_id) {
+  auto add_top = [&](MeshData m, int material, int object_id, std::shared_ptr<const bark::BarkSurface> bark = nullptr) {
     auto mesh = padded(std::move(m));
     const int area_first = add_area(*mesh, material);
     stats_.unique_triangles += mesh->triangle_count();
     stats_.triangles += mesh->triangle_count();
-    add_mesh_to(scene_.get(), shapes_, mesh, material, object_id, area_first);
+    add_mesh_to(scene_.get(), shapes_, mesh, material, object_id, area_first, std::move(bark));
   };
 
   // Dicing set-up (screen space uses the dicing camera, fixed across turntable frames).
@@ -214,6 +219,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     ParametricSurface surface;
     std::shared_ptr<const MeshData> base;
     DisplacementFn disp;
+    std::shared_ptr<const bark::BarkSurface> bark;
   };
   std::vector<DicedJob> jobs;
   std::map<std::string, int> prototype_of_file;
@@ -252,7 +258,32 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
         break;
       case ObjectType::Tree: {
         const DisplacementFn disp = make_displacement(o.tree.displacement);
-        for (auto& part : build_tree(o.tree, disp)) jobs.push_back({&o, mat, object_id, part.surface, nullptr, nullptr});
+        if (!o.tree.strip_bark) {
+          for (auto& part : build_tree(o.tree, disp)) jobs.push_back({&o, mat, object_id, part.surface, nullptr, nullptr, nullptr});
+          break;
+        }
+        // Strip bark: the fracture depth displaces the surface inwards (true geometry) and the
+        // dressed field shades it.
+        auto it = opts.bark.find(oi);
+        if (it == opts.bark.end()) {
+          const auto tb = Clock::now();
+          TreeStripSimulation sim(o, oi);
+          sim.run(opts.progress);
+          it = opts.bark.emplace(oi, sim.surfaces()).first;
+          opts.bark_seconds += seconds_since(tb);
+        }
+        const auto& surfaces = it->second;
+        auto parts = build_tree(o.tree, [&](size_t k) -> DisplacementFn {
+          if (k >= surfaces.size()) return disp;
+          std::shared_ptr<const bark::BarkSurface> b = surfaces[k];
+          return [b, disp](const Vec2f& uv, const Vec3f& p) {
+            return disp(uv, p) - b->depth(uv.x(), uv.y() / b->length());
+          };
+        });
+        for (size_t k = 0; k < parts.size(); ++k) {
+          parts[k].surface.keep_params = true;
+          jobs.push_back({&o, mat, object_id, parts[k].surface, nullptr, nullptr, k < surfaces.size() ? surfaces[k] : nullptr});
+        }
         break;
       }
       case ObjectType::Mesh: {
@@ -280,7 +311,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
             for (auto& t : w.tangents) t.head<3>() = transform_vector(o.transform.matrix, t.head<3>()).normalized();
             if (w.normals.empty()) compute_vertex_normals(w);
             if (o.displacement.type != DisplacementDesc::Type::None) {
-              jobs.push_back({&o, resolve(m), object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement)});
+              jobs.push_back({&o, resolve(m), object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement), nullptr});
             } else {
               add_top(std::move(w), resolve(m), object_id);
             }
@@ -337,7 +368,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
       MeshData m = j.base ? dice(*j.base, j.disp, dicing) : dice(j.surface, dicing);
       stats_.diced_triangles += m.triangle_count();
       stats_.diced_bytes += m.memory_bytes();
-      add_top(std::move(m), j.material, j.object_id);
+      add_top(std::move(m), j.material, j.object_id, j.bark);
     }
   }
   stats_.tessellate_s = seconds_since(t0);
@@ -411,6 +442,7 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   hit->object_id = inst ? inst->object_id : shape->object_id;
   hit->area_light = -1;
   hit->crack_mask = hit->crack_depth = 0;
+  hit->bark = false;
   if (shape->sphere) {
     const Vec3f n = (hit->p - shape->center).normalized();
     hit->ng = hit->ns = n;
@@ -440,6 +472,14 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   } else {
     hit->uv = Vec2f(u, v);
     hit->uv_per_metre = 1.0f;
+  }
+  if (shape->bark && !m.params.empty()) {
+    const Vec2f q = w * m.params[idx[0]] + u * m.params[idx[1]] + v * m.params[idx[2]];
+    const bark::BarkSurface::Shade sh = shape->bark->shade(q.x(), q.y());
+    hit->bark = true;
+    hit->crack_mask = sh.mask;
+    hit->crack_depth = sh.depth;
+    hit->bark_albedo = Color(sh.albedo.x(), sh.albedo.y(), sh.albedo.z());
   }
   if (!m.tangents.empty())
     hit->tangent = w * m.tangents[idx[0]] + u * m.tangents[idx[1]] + v * m.tangents[idx[2]];

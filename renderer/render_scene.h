@@ -6,10 +6,12 @@
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "bark/dressing/bark_surface.h"
 #include "renderer/camera.h"
 #include "renderer/light.h"
 #include "renderer/material.h"
@@ -30,7 +32,20 @@ struct SurfaceHit {
   int material = 0;
   int object_id = 0;          // 1-based object index in the scene file
   int area_light = -1;        // triangle index in the area lights, or -1
-  float crack_mask = 0, crack_depth = 0;  // reserved for bark models
+  // Bark models (BarkSurface): fracture coverage, normalized depth, and the dressed albedo
+  // that replaces the material's base colour when `bark` is set.
+  float crack_mask = 0, crack_depth = 0;
+  bool bark = false;
+  Color bark_albedo = Color::Zero();
+};
+
+// How a RenderScene is built beyond the SceneDesc: bark surfaces already simulated (per
+// 0-based object index, one per tree part) — a tree with strip bark and no entry here is
+// simulated while the scene is built — and whether that shows progress.
+struct SceneBuildOptions {
+  std::map<size_t, std::vector<std::shared_ptr<const bark::BarkSurface>>> bark;
+  bool progress = false;
+  double bark_seconds = 0;  // out: time spent simulating and dressing bark
 };
 
 struct GeometryStats {
@@ -77,7 +92,7 @@ class RenderScene {
  public:
   // Compiles the scene. `dicing` is the camera used for screen-space tessellation (the render
   // camera by default; a turntable passes its first frame so geometry does not crawl).
-  RenderScene(const SceneDesc& desc, const CameraDesc& dicing, int width, int height);
+  RenderScene(const SceneDesc& desc, const CameraDesc& dicing, int width, int height, SceneBuildOptions* options = nullptr);
   ~RenderScene();
   RenderScene(const RenderScene&) = delete;
   RenderScene& operator=(const RenderScene&) = delete;
@@ -98,7 +113,8 @@ class RenderScene {
   struct Shape;
   struct Prototype;
   struct Instance;
-  void add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::shared_ptr<const MeshData> mesh, int material, int object_id, int area_first);
+  void add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::shared_ptr<const MeshData> mesh, int material, int object_id,
+                   int area_first, std::shared_ptr<const bark::BarkSurface> bark = nullptr);
   void fill_hit(const struct RTCRayHit& rh, const Ray& ray, SurfaceHit* hit) const;
 
   DevicePtr device_;

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "bark/dressing/field_color.h"
 #include "bark/strips/fracture_field.h"
 #include "bark/strips/strip_params.h"
 
@@ -15,6 +16,7 @@ struct StripBarkDesc {
   std::string preset;
   bark::StripParams params;
   bark::DepthProfile depth;
+  bark::FieldColors colors;  // dressing samples and depth darkening
   int field_width = 0, field_height = 0;  // FractureField resolution per cylinder (0: automatic)
 };
 

@@ -160,10 +160,12 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d) {
   m.positions.resize(nv);
   m.normals.resize(nv);
   m.uvs.resize(nv);
+  if (s.keep_params) m.params.resize(nv);
   const float h = 1e-4f;
   auto evaluate = [&](size_t k) {
     const VertexParam& p = params[k];
     m.uvs[k] = s.texcoord(p.u, p.v);
+    if (s.keep_params) m.params[k] = Vec2f(p.u, p.v);
     if (p.copy_from >= 0) return;
     m.positions[k] = s.position(p.u, p.v);
     // Normal of the displaced surface by central differences (one-sided at open borders).

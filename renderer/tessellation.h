@@ -31,6 +31,7 @@ struct ParametricSurface {
   std::function<Vec3f(float u, float v)> position;
   std::function<Vec2f(float u, float v)> texcoord;
   bool periodic_u = false;
+  bool keep_params = false;  // store (u, v) per vertex in MeshData::params
   int patches_u = 8, patches_v = 8;
 };
 

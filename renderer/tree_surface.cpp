@@ -34,8 +34,8 @@ float mean(const std::vector<float>& r) {
   return s / float(r.size());
 }
 
-void add_branches(const GeneralizedCylinder& parent, const std::vector<BranchDesc>& branches, const DisplacementFn& disp,
-                  float uv_repeat, std::vector<TreePart>& out) {
+void add_branches(const GeneralizedCylinder& parent, int parent_index, const std::vector<BranchDesc>& branches,
+                  const std::function<DisplacementFn(size_t)>& disp, float uv_repeat, std::vector<TreePart>& out) {
   for (const BranchDesc& b : branches) {
     const Eigen::Vector3d a = parent.axis_point(b.attach);
     const Eigen::Matrix3d f = parent.frame(b.attach);
@@ -49,21 +49,27 @@ void add_branches(const GeneralizedCylinder& parent, const std::vector<BranchDes
     }
     std::vector<double> radius(b.radius.begin(), b.radius.end());
     auto cyl = std::make_shared<GeneralizedCylinder>(axis, radius, f.col(0));
-    out.push_back(make_part(cyl, disp, uv_repeat, mean(b.radius)));
-    add_branches(*cyl, b.branches, disp, uv_repeat, out);
+    out.push_back(make_part(cyl, disp(out.size()), uv_repeat, mean(b.radius)));
+    out.back().parent = parent_index;
+    out.back().attach = b.attach;
+    add_branches(*cyl, int(out.size()) - 1, b.branches, disp, uv_repeat, out);
   }
 }
 
 }  // namespace
 
 std::vector<TreePart> build_tree(const TreeDesc& desc, const DisplacementFn& disp) {
+  return build_tree(desc, [&](size_t) { return disp; });
+}
+
+std::vector<TreePart> build_tree(const TreeDesc& desc, const std::function<DisplacementFn(size_t)>& disp) {
   std::vector<Eigen::Vector3d> axis;
   for (const Vec3f& p : desc.axis) axis.push_back(p.cast<double>());
   std::vector<double> radius(desc.radius.begin(), desc.radius.end());
   auto trunk = std::make_shared<GeneralizedCylinder>(axis, radius, Eigen::Vector3d::UnitX());
   std::vector<TreePart> parts;
-  parts.push_back(make_part(trunk, disp, desc.uv_repeat, mean(desc.radius)));
-  add_branches(*trunk, desc.branches, disp, desc.uv_repeat, parts);
+  parts.push_back(make_part(trunk, disp(0), desc.uv_repeat, mean(desc.radius)));
+  add_branches(*trunk, 0, desc.branches, disp, desc.uv_repeat, parts);
   return parts;
 }
 

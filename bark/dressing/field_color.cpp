@@ -1,17 +1,98 @@
 #include "bark/dressing/field_color.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <cmath>
 
 namespace phellem::bark {
 
-void dress_colors(FractureField& f, const FieldColors& c, double max_depth) {
-  const size_t n = size_t(f.width) * f.height;
-  for (size_t p = 0; p < n; ++p) {
-    const Eigen::Vector3f skin = f.level[p] > 0 && f.opening[p] <= 0 ? c.hardened : c.epidermis;
-    const Eigen::Vector3f base = skin + f.opening[p] * (c.fracture - skin);
-    const float dark = 1.0f - c.depth_darkening * float(std::clamp(f.depth[p] / max_depth, 0.0, 1.0));
-    for (int k = 0; k < 3; ++k) f.color[3 * p + size_t(k)] = base[k] * dark;
+namespace {
+
+// Lattice coordinates wrap after `nx` × `ny` cells when those are non-zero.
+float hash01(int64_t x, int64_t y, uint32_t seed, int64_t nx, int64_t ny) {
+  if (nx > 0) x = ((x % nx) + nx) % nx;
+  if (ny > 0) y = ((y % ny) + ny) % ny;
+  uint64_t h = uint64_t(x) * 0x9e3779b97f4a7c15ULL ^ (uint64_t(y) + 0x632be59bd9b4e019ULL) * 0xc2b2ae3d27d4eb4fULL ^ seed;
+  h ^= h >> 31;
+  h *= 0xbf58476d1ce4e5b9ULL;
+  h ^= h >> 29;
+  return float(h >> 40) * (1.0f / 16777216.0f);
+}
+
+float value_noise(double x, double y, uint32_t seed, int64_t nx, int64_t ny) {
+  const double fx = std::floor(x), fy = std::floor(y);
+  const int64_t ix = int64_t(fx), iy = int64_t(fy);
+  double tx = x - fx, ty = y - fy;
+  tx = tx * tx * (3 - 2 * tx);
+  ty = ty * ty * (3 - 2 * ty);
+  const float a = hash01(ix, iy, seed, nx, ny), b = hash01(ix + 1, iy, seed, nx, ny);
+  const float c = hash01(ix, iy + 1, seed, nx, ny), d = hash01(ix + 1, iy + 1, seed, nx, ny);
+  return float((a * (1 - tx) + b * tx) * (1 - ty) + (c * (1 - tx) + d * tx) * ty);
+}
+
+// A feature size fitted to a whole number of repeats of `period` (unchanged without one).
+double fit(double size, double period, int64_t* cells) {
+  if (period <= 0) {
+    *cells = 0;
+    return size;
   }
+  *cells = std::max<int64_t>(1, std::llround(period / size));
+  return period / double(*cells);
+}
+
+}  // namespace
+
+Eigen::Vector3f ColorSample::at(double x, double y, double period_x, double period_y) const {
+  if (!rgb.empty()) {
+    int64_t nx, ny;
+    double u = x / fit(size_x, period_x, &nx), v = y / fit(size_y, period_y, &ny);
+    u = (u - std::floor(u)) * width - 0.5;
+    v = (1.0 - (v - std::floor(v))) * height - 0.5;  // row 0 is the top of the image
+    const double fu = std::floor(u), fv = std::floor(v);
+    const double tu = u - fu, tv = v - fv;
+    auto px = [&](long i, long j) {
+      i = ((i % width) + width) % width;
+      j = ((j % height) + height) % height;
+      return Eigen::Vector3f(&rgb[(size_t(j) * width + size_t(i)) * 3]);
+    };
+    const long i = long(fu), j = long(fv);
+    return float((1 - tv) * (1 - tu)) * px(i, j) + float((1 - tv) * tu) * px(i + 1, j) + float(tv * (1 - tu)) * px(i, j + 1) +
+           float(tv * tu) * px(i + 1, j + 1);
+  }
+  // Fibres: noise stretched 12× along the axis, over two octaves of blotches.
+  auto noise = [&](double cx, double cy, uint32_t sd) {
+    int64_t nx, ny;
+    const double gx = fit(cx, period_x, &nx), gy = fit(cy, period_y, &ny);
+    return value_noise(x / gx, y / gy, sd, nx, ny);
+  };
+  const double g = grain;
+  const float fibre = noise(g, 12 * g, seed);
+  const float blotch = 0.65f * noise(8 * g, 8 * g, seed + 1) + 0.35f * noise(3 * g, 3 * g, seed + 2);
+  const float m = 1.0f + variation * (1.2f * (fibre - 0.5f) + 1.0f * (blotch - 0.5f));
+  return base * std::max(0.0f, m);
+}
+
+void dress_colors(FractureField& f, const FieldColors& c, double max_depth, double initial_circumference, bool tile_s) {
+  const double C = f.circumference, C0 = initial_circumference, Py = tile_s ? f.length : 0.0;
+  tbb::parallel_for(0, f.height, [&](int y) {
+    const double s = (y + 0.5) / f.height * f.length;
+    for (int x = 0; x < f.width; ++x) {
+      const size_t p = f.index(x, y);
+      const double around = (x + 0.5) / f.width * C;
+      const ColorSample& skin_sample = f.level[p] > 0 && f.opening[p] <= 0 ? c.hardened : c.epidermis;
+      // The epidermis is quasi-rigid: its pattern lives at the material coordinate (metres of
+      // the original circumference), not at the current position.
+      const Eigen::Vector3f skin = skin_sample.at(f.uv0[2 * p] * C0, s, C0, Py);
+      Eigen::Vector3f base = skin;
+      if (f.opening[p] > 0) {
+        const Eigen::Vector3f inner = c.fracture.at(around, s, C, Py) * (1.0f - c.interior_darkening * f.interior[p]);
+        base = skin + f.opening[p] * (inner - skin);
+      }
+      const float dark = 1.0f - c.depth_darkening * float(std::clamp(f.depth[p] / max_depth, 0.0, 1.0));
+      for (int k = 0; k < 3; ++k) f.color[3 * p + size_t(k)] = std::max(0.0f, base[k] * dark);
+    }
+  });
 }
 
 }  // namespace phellem::bark

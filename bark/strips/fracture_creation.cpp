@@ -60,7 +60,9 @@ void StripModel::break_strip(size_t j) {
   for (const ScriptedFracture& sf : params_.scripted)
     if (sf.step == step_ && size_t(std::clamp(int(sf.s / domain_.strip_width), 0, int(strips_.size()) - 1)) == j)
       scripted_[j] += trigger(j, sf.theta) ? 1 : 0;
-  if (!over_[j] && scripted_[j] == 0) return;  // nothing exceeded its threshold after growth
+  for (double theta : arrivals_[j]) arrived_[j] += trigger(j, theta) ? 1 : 0;
+  arrivals_[j].clear();
+  if (!over_[j] && scripted_[j] == 0 && arrived_[j] == 0) return;  // nothing exceeded its threshold after growth
   // Figure 8: while an element obeys the criterion L / l0 > S_i, break the most strained one
   // at its weakest point and solve again. S above its lower bound (validated) makes every
   // break relax the element; the cap only guards against floating-point pathologies.

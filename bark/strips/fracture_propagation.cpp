@@ -36,6 +36,34 @@ void StripModel::measure_fractures() {
     }
 }
 
+bool StripModel::sharp(int32_t id) const {
+  // Inglis: the stress at a tip grows with the fracture's length-to-width ratio (mean width).
+  const size_t root = size_t(skeleton_.find(id));
+  if (root >= fracture_count_.size()) return false;
+  const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
+  return count * domain_.strip_width > params_.inglis_threshold * mean_width;
+}
+
+std::vector<FractureTip> StripModel::sharp_tips(size_t first, size_t last) const {
+  std::vector<FractureTip> out;
+  for (size_t j = first; j < std::min(last, strips_.size()); ++j) {
+    const Strip& s = strips_[j];
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (s.elements[i].kind != ElementKind::Fracture) continue;
+      const FractureElement& fe = s.fractures[size_t(s.elements[i].fracture)];
+      if (!fe.active || fe.id < 0 || !sharp(fe.id)) continue;
+      const int32_t root = skeleton_.find(fe.id);
+      if (fe.up < 0) out.push_back({j, centre_theta(j, i), root, true});
+      if (fe.down < 0) out.push_back({j, centre_theta(j, i), root, false});
+    }
+  }
+  return out;
+}
+
+void StripModel::queue_arrival(size_t strip, double theta) {
+  if (strip < arrivals_.size()) arrivals_[strip].push_back(theta);
+}
+
 void StripModel::propagate_from(size_t j) {
   const size_t n = strips_.size();
   const double ws = domain_.strip_width;
@@ -45,12 +73,6 @@ void StripModel::propagate_from(size_t j) {
     return j > 0 ? long(j - 1) : (domain_.wrap_s ? long(n - 1) : -1);
   };
   StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
-  // Inglis: the stress at a tip grows with the fracture's length-to-width ratio (mean width).
-  auto sharp = [&](int32_t id) {
-    const size_t root = size_t(skeleton_.find(id));
-    const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
-    return count * ws > params_.inglis_threshold * mean_width;
-  };
   // Free ends of this strip (listed after growth, plus those made since in the sweep); the
   // element index of each is looked up only once one passes the Inglis test.
   struct Tip {

@@ -22,6 +22,8 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   epidermis0_.resize(n);
   breaks_.assign(n, 0);
   scripted_.assign(n, 0);
+  arrived_.assign(n, 0);
+  arrivals_.resize(n);
   hardened_.assign(n, 0);
   capped_.assign(n, 0);
   residual_.assign(n, 0.0);
@@ -251,10 +253,11 @@ void StripModel::step() {
   for (size_t j = 0; j < n; ++j) {
     stats_.created += breaks_[j];
     stats_.scripted += scripted_[j];
+    stats_.arrived += arrived_[j];
     stats_.refractured += hardened_[j];
     stats_.max_breaks_per_strip_step = std::max(stats_.max_breaks_per_strip_step, breaks_[j]);
     stats_.capped += capped_[j];
-    breaks_[j] = scripted_[j] = hardened_[j] = capped_[j] = 0;
+    breaks_[j] = scripted_[j] = hardened_[j] = capped_[j] = arrived_[j] = 0;
   }
   ++step_;
 }

@@ -27,12 +27,23 @@ namespace phellem::bark {
 struct StripStats {
   // created counts every break that started a fracture, scripted ones included.
   long long created = 0, scripted = 0, propagated = 0, merged = 0, refractured = 0;
+  long long arrived = 0;  // fractures continued from another cylinder (queue_arrival)
   long long max_breaks_per_strip_step = 0;  // largest number of breaks in one strip in one step
   long long capped = 0;  // break loops stopped by the safety cap instead of the criterion (should stay 0)
 };
 
 // A location on another surface that fractures propagating off this one should continue
 // into (sec. 5.3, Figure 20): set by a caller that owns several models (a tree).
+struct PropagationExit;
+
+// The free end of a fracture sharp enough to propagate (Inglis, sec. 3.2.4).
+struct FractureTip {
+  size_t strip = 0;
+  double theta = 0;  // final-shape angle of the fracture element's centre
+  int32_t root = 0;  // skeleton component
+  bool up = true;    // free on the strip's upper (s+) side (else lower)
+};
+
 struct PropagationExit {
   int strip = 0;     // strip on this model from which a fracture leaves
   bool up = true;    // leaving through the strip's upper (s+) side
@@ -75,6 +86,13 @@ class StripModel {
   void set_check_equilibrium(bool on) { check_ = on; }
   double max_residual() const;
 
+  // Sharp free ends on strips [first, last) in the current state.
+  std::vector<FractureTip> sharp_tips(size_t first, size_t last) const;
+  // A fracture arriving from another cylinder (a tree's branching, sec. 5.3 / Figure 20): it
+  // starts at (strip, θ) in the next step's sweep, before the strip's own breaks, and then
+  // propagates like any other. Counted in stats().arrived (and created).
+  void queue_arrival(size_t strip, double theta);
+
   // Fractures that tried to propagate past the first or last strip during the last step.
   const std::vector<PropagationExit>& exits() const { return exits_; }
 
@@ -101,7 +119,8 @@ class StripModel {
   std::vector<double> epidermis0_;       // per strip: original epidermis length E0
   // Per strip, for the current step: breaks (created + scripted), scripted breaks, hardened
   // fracture elements. Summed into stats_ after the parallel phases.
-  std::vector<long long> breaks_, scripted_, hardened_, capped_;
+  std::vector<long long> breaks_, scripted_, hardened_, capped_, arrived_;
+  std::vector<std::vector<double>> arrivals_;  // per strip: queued arrival angles
   FractureSkeleton skeleton_;
   std::vector<OpeningMode> modes_;
   StripStats stats_;
@@ -115,6 +134,7 @@ class StripModel {
   std::vector<char> over_;                   // per strip: an element exceeded its threshold after growth
   std::vector<std::vector<int32_t>> tips_;   // per strip: fracture elements with a free end this step
   std::vector<std::vector<std::pair<int32_t, double>>> widths_;  // per strip: (fracture root, width)
+  bool sharp(int32_t id) const;
   void scan_strip(size_t j);
   void solve(size_t j);
 };

@@ -1,0 +1,69 @@
+#include "renderer/strip_bark_tree.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/errors.h"
+#include "renderer/progress.h"
+
+namespace phellem {
+
+TreeStripSimulation::TreeStripSimulation(const ObjectDesc& obj, size_t oi, std::optional<uint32_t> seed)
+    : desc_(obj.tree.strip_bark) {
+  if (!desc_) throw std::logic_error("TreeStripSimulation: the tree has no strip bark");
+  parts_ = build_tree(obj.tree, [](const Vec2f&, const Vec3f&) { return 0.0f; });
+  std::vector<bark::TreeCylinder> cylinders;
+  for (const TreePart& p : parts_) cylinders.push_back({p.cylinder, p.parent, p.attach});
+  bark::StripParams params = desc_->params;
+  if (seed) params.seed = *seed;
+  try {
+    sim_ = std::make_unique<bark::TreeStripBark>(std::move(cylinders), params);
+  } catch (const bark::StripParamError& e) {
+    // The models re-check S against the softest element they actually built (strips narrower
+    // than nominal on bent limbs are softer): report it at the scene's JSON path.
+    throw UserError(obj.where.file, "/objects/" + std::to_string(oi) + "/bark/" + e.key, e.key + ": " + e.message);
+  }
+  label_ = "simulate " + (obj.name.empty() ? "tree" + std::to_string(oi) : obj.name);
+}
+
+void TreeStripSimulation::run_to(int step, bool progress) {
+  step = std::min(step, steps_total());
+  if (steps_done() >= step) return;
+  Progress bar(label_, step - steps_done(), progress);
+  while (steps_done() < step) {
+    sim_->step();
+    bar.advance();
+  }
+  bar.finish();
+}
+
+bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
+  const bark::StripModel& model = sim_->model(k);
+  double C = 0;
+  for (const auto& st : model.strips()) C += st.circumference / double(model.strips().size());
+  const double L = model.domain().length;
+  if (W <= 0 || H <= 0) {
+    W = desc_->field_width;
+    H = desc_->field_height;
+  }
+  if (W <= 0 || H <= 0) {
+    // Texels a quarter of a strip wide at the final size: fracture edges stay sharp in close-ups.
+    const double texel = model.domain().strip_width / 4;
+    const double C_final = C / model.scale_at_step(model.steps_done());
+    W = std::clamp(int(std::lround(C_final / texel)), 64, 8192);
+    H = std::clamp(int(std::lround(L / texel)), 16, 8192);
+  }
+  bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
+  const double C0 = C * model.scale_at_step(0) / model.scale_at_step(model.steps_done());
+  bark::dress_colors(f, desc_->colors, desc_->depth.max_depth, C0);
+  return f;
+}
+
+std::vector<std::shared_ptr<const bark::BarkSurface>> TreeStripSimulation::surfaces() const {
+  std::vector<std::shared_ptr<const bark::BarkSurface>> out;
+  for (size_t k = 0; k < parts_.size(); ++k)
+    out.push_back(std::make_shared<bark::BarkSurface>(field(k), desc_->depth.max_depth));
+  return out;
+}
+
+}  // namespace phellem

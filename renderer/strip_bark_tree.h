@@ -1,0 +1,55 @@
+// The strip-model bark of one scene `tree`: its cylinders (trunk and branches, from
+// build_tree) simulated together (bark::TreeStripBark), dressed into FractureFields and handed
+// to the renderer as BarkSurfaces. Used by `phellem simulate` (fields to EXR), by the render
+// scene (displacement and shading) and by `phellem growth` (frames along the simulation).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bark/dressing/bark_surface.h"
+#include "bark/dressing/field_color.h"
+#include "bark/strips/tree_bark.h"
+#include "renderer/scene_desc.h"
+#include "renderer/strip_bark_desc.h"
+#include "renderer/tree_surface.h"
+
+namespace phellem {
+
+class TreeStripSimulation {
+ public:
+  // Builds the models. A parameter the built surface cannot take is a UserError at
+  // /objects/<index>/bark/<key>. `seed` overrides the scene's.
+  TreeStripSimulation(const ObjectDesc& tree, size_t object_index, std::optional<uint32_t> seed = {});
+
+  // Grows until `step` (clamped to the total), showing progress when asked.
+  void run_to(int step, bool progress);
+  void run(bool progress) { run_to(steps_total(), progress); }
+  int steps_done() const { return sim_->model(0).steps_done(); }
+  int steps_total() const { return sim_->model(0).steps_total(); }
+  // Girth of the current step relative to the final shape (≤ 1): frames of a growth time-lapse
+  // draw the tree at this scale.
+  double girth_scale() const { return sim_->model(0).scale_at_step(steps_done()); }
+
+  size_t parts() const { return parts_.size(); }
+  // "trunk", "branch1", ...
+  std::string part_name(size_t k) const { return k == 0 ? "trunk" : "branch" + std::to_string(k); }
+  const bark::TreeStripBark& bark() const { return *sim_; }
+  const StripBarkDesc& desc() const { return *desc_; }
+
+  // The dressed field of part k in the current state; 0 × 0 picks the scene's resolution or,
+  // without one, texels a quarter of a strip wide.
+  bark::FractureField field(size_t k, int width = 0, int height = 0) const;
+  // Every part's BarkSurface in the current state, at the automatic resolution.
+  std::vector<std::shared_ptr<const bark::BarkSurface>> surfaces() const;
+
+ private:
+  std::shared_ptr<const StripBarkDesc> desc_;
+  std::vector<TreePart> parts_;
+  std::unique_ptr<bark::TreeStripBark> sim_;
+  std::string label_;
+};
+
+}  // namespace phellem
