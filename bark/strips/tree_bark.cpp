@@ -11,7 +11,8 @@ constexpr double kTwoPi = 6.283185307179586;
 
 // Closest point of the cylinder's surface to p, searched from arc length s0 (m): the axis
 // parameter by a few projection steps, then the angle in the local frame. Returns the signed
-// distance of p from the surface (positive outside).
+// distance of p from the surface (positive outside); beyond an end of the axis the distance
+// includes the overshoot along it.
 double surface_coords(const GeneralizedCylinder& c, const Eigen::Vector3d& p, double s0, double* s_out, double* theta_out) {
   const double L = c.length();
   double s = std::clamp(s0, 0.0, L);
@@ -21,12 +22,14 @@ double surface_coords(const GeneralizedCylinder& c, const Eigen::Vector3d& p, do
   }
   const Eigen::Matrix3d f = c.frame(s / L);
   Eigen::Vector3d r = p - c.axis_point(s / L);
-  r -= f.col(0) * r.dot(f.col(0));
+  const double axial = r.dot(f.col(0));  // non-zero only beyond an end of the axis
+  r -= f.col(0) * axial;
   double theta = std::atan2(r.dot(f.col(2)), r.dot(f.col(1)));
   if (theta < 0) theta += kTwoPi;
   *s_out = s;
   *theta_out = theta;
-  return r.norm() - c.radius(s / L, theta);
+  const double radial = r.norm() - c.radius(s / L, theta);
+  return std::copysign(std::hypot(radial, axial), radial);
 }
 
 size_t strip_at(const StripModel& m, double s) {
