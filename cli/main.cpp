@@ -12,7 +12,10 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli/frame_sequence.h"
+#include "cli/growth.h"
 #include "cli/options.h"
+#include "cli/render_job.h"
 #include "cli/simulate.h"
 #include "renderer/atomic_file.h"
 #include "renderer/errors.h"
@@ -34,37 +37,15 @@ double peak_rss_mb() {
   return double(ru.ru_maxrss) / 1024.0;
 }
 
-struct Loaded {
-  SceneDesc desc;
-  RenderSettings settings;
-  int width, height;
-};
-
-Loaded load(const cli::Options& o) {
-  Loaded l{o.scene.empty() ? default_scene() : load_scene_file(o.scene), {}, 0, 0};
-  const RenderDesc& r = l.desc.render;
-  l.width = o.width.value_or(r.width);
-  l.height = o.height.value_or(r.height);
-  l.settings.spp = o.spp.value_or(r.spp);
-  l.settings.max_depth = r.max_depth;
-  l.settings.seed = o.seed.value_or(r.seed);
-  l.settings.filter = r.filter;
-  l.settings.threads = o.threads.value_or(0);
-  l.settings.progress = !o.quiet;
-  return l;
-}
-
-void check_view(const cli::Options& o) {
-  if (!o.view.empty()) require_view(o.view);
-}
-
 int run_render(const cli::Options& o) {
   check_view(o);
   const auto t0 = Clock::now();
   Loaded l = load(o);
   const double t_load = since(t0);
   const auto t1 = Clock::now();
-  RenderScene scene(l.desc, l.desc.camera, l.width, l.height);
+  SceneBuildOptions build;
+  build.progress = !o.quiet;
+  RenderScene scene(l.desc, l.desc.camera, l.width, l.height, &build);
   const double t_build = since(t1);
   const Camera camera(l.desc.camera, l.width, l.height);
   RenderResult res = render_image(scene, camera, l.width, l.height, l.settings);
@@ -82,7 +63,7 @@ int run_render(const cli::Options& o) {
     nlohmann::json j;
     j["spp"] = l.settings.spp;
     j["resolution"] = {l.width, l.height};
-    j["time_s"] = {{"total", total}, {"load", t_load}, {"build", t_build}, {"tessellate", gs.tessellate_s}, {"bvh", gs.bvh_s}, {"render", res.seconds}};
+    j["time_s"] = {{"total", total}, {"load", t_load}, {"build", t_build}, {"bark", build.bark_seconds}, {"tessellate", gs.tessellate_s}, {"bvh", gs.bvh_s}, {"render", res.seconds}};
     j["rays"] = res.rays;
     j["mrays_per_s"] = res.rays / res.seconds * 1e-6;
     j["triangles"] = gs.triangles;
@@ -104,32 +85,14 @@ int run_render(const cli::Options& o) {
   return 0;
 }
 
-std::string frame_name(const std::string& pattern, int frame) {
-  std::vector<char> buf(pattern.size() + 64);
-  std::snprintf(buf.data(), buf.size(), pattern.c_str(), frame);
-  return buf.data();
-}
-
 int run_turntable(const cli::Options& o) {
   check_view(o);
-  // Validate the pattern: exactly one integer conversion.
-  {
-    size_t n = 0;
-    for (size_t i = 0; i + 1 < o.exr.size(); ++i)
-      if (o.exr[i] == '%') {
-        if (o.exr[i + 1] == '%') { ++i; continue; }
-        ++n;
-        size_t j = i + 1;
-        while (j < o.exr.size() && (std::isdigit(static_cast<unsigned char>(o.exr[j])))) ++j;
-        if (j >= o.exr.size() || o.exr[j] != 'd') throw UserError("", "-o", "only %d-style frame fields (e.g. %04d) are allowed");
-      }
-    if (n != 1) throw UserError("", "-o", "the pattern needs exactly one frame field such as %04d");
-  }
-  if (!o.mp4.empty() && std::system("command -v ffmpeg >/dev/null 2>&1") != 0)
-    throw UserError("", "--mp4", "ffmpeg is not installed (apt-get install ffmpeg), so no MP4 can be encoded");
+  check_frame_outputs(o);
   Loaded l = load(o);
   // Geometry is diced once, for the first frame's camera, so it does not crawl.
-  RenderScene scene(l.desc, l.desc.camera, l.width, l.height);
+  SceneBuildOptions build;
+  build.progress = !o.quiet;
+  RenderScene scene(l.desc, l.desc.camera, l.width, l.height, &build);
   const int frames = *o.frames;
   const float degrees = o.degrees.value_or(360.0f);
   const bool png = o.png_frames || !o.mp4.empty();
@@ -143,13 +106,7 @@ int run_turntable(const cli::Options& o) {
     write_exr(res.film, exr);
     if (png) write_png(res.film, std::filesystem::path(exr).replace_extension(".png").string(), o.view.empty() ? default_view() : o.view);
   }
-  if (!o.mp4.empty()) {
-    const std::string png_pattern = std::filesystem::path(o.exr).replace_extension(".png").string();
-    write_atomically(o.mp4, [&](const std::string& tmp) {
-      const std::string cmd = "ffmpeg -loglevel error -y -framerate 24 -i '" + png_pattern + "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + tmp + "'";
-      if (std::system(cmd.c_str()) != 0) throw std::runtime_error("ffmpeg failed to encode " + o.mp4);
-    });
-  }
+  if (!o.mp4.empty()) encode_mp4(o);
   return 0;
 }
 
@@ -175,6 +132,7 @@ int main(int argc, char** argv) {
     }
     OIIO::attribute("threads", o.threads.value_or(0));
     if (o.command == "simulate") return run_simulate(o);
+    if (o.command == "growth") return run_growth(o);
     return o.command == "render" ? run_render(o) : run_turntable(o);
   } catch (const UserError& e) {
     std::cerr << "phellem: error: " << e.what() << "\n";

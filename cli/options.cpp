@@ -26,6 +26,8 @@ std::string usage() {
          "                 [--seed S] [--stats STATS.json] [--view NAME] [--quiet]\n"
          "  phellem turntable SCENE.json --frames N -o DIR/frame_%04d.exr [--png] [--mp4 OUT.mp4]\n"
          "                 [--degrees D] [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
+         "  phellem growth SCENE.json --frames N -o DIR/frame_%04d.exr [--png] [--mp4 OUT.mp4]\n"
+         "                 [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
          "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--threads N] [--quiet]\n"
          "  phellem --help | --version\n"
          "Without SCENE.json, `render` renders the embedded default scene. See README.md and\n"
@@ -36,8 +38,9 @@ Options parse(const std::vector<std::string>& args) {
   Options o;
   if (args.empty()) bad("", "no command given\n" + usage());
   o.command = args[0];
-  if (o.command != "render" && o.command != "turntable" && o.command != "simulate")
-    bad(o.command, "unknown command; allowed: render, turntable, simulate\n" + usage());
+  if (o.command != "render" && o.command != "turntable" && o.command != "growth" && o.command != "simulate")
+    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate\n" + usage());
+  const bool frames = o.command == "turntable" || o.command == "growth";
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> std::string {
@@ -46,13 +49,13 @@ Options parse(const std::vector<std::string>& args) {
     };
     if (a == "-o" || a == "--output") o.exr = value();
     else if (a == "--png") {
-      if (o.command == "turntable") o.png_frames = true;
+      if (frames) o.png_frames = true;
       else o.png = value();
-    } else if (a == "--mp4" && o.command == "turntable") o.mp4 = value();
+    } else if (a == "--mp4" && frames) o.mp4 = value();
     else if (a == "--stats") o.stats = value();
     else if (a == "--spp") o.spp = int(integer(a, value(), 1, 1 << 20));
     else if (a == "--threads") o.threads = int(integer(a, value(), 1, 1024));
-    else if (a == "--frames" && o.command == "turntable") o.frames = int(integer(a, value(), 1, 100000));
+    else if (a == "--frames" && frames) o.frames = int(integer(a, value(), 1, 100000));
     else if (a == "--seed") o.seed = uint32_t(integer(a, value(), 0, 0xFFFFFFFFLL));
     else if (a == "--degrees" && o.command == "turntable") {
       const std::string v = value();
@@ -80,10 +83,10 @@ Options parse(const std::vector<std::string>& args) {
     if (o.exr.empty()) bad("-o", "required for simulate: the output folder");
     if (o.spp || !o.png.empty()) bad(o.spp ? "--spp" : "--png", "not an option of simulate");
   }
-  if (o.command == "turntable") {
-    if (o.scene.empty()) bad("turntable", "a scene file is required");
-    if (!o.frames) bad("--frames", "required for turntable");
-    if (o.exr.empty()) bad("-o", "required for turntable: a pattern such as out/frame_%04d.exr");
+  if (frames) {
+    if (o.scene.empty()) bad(o.command, "a scene file is required");
+    if (!o.frames) bad("--frames", "required for " + o.command);
+    if (o.exr.empty()) bad("-o", "required for " + o.command + ": a pattern such as out/frame_%04d.exr");
     if (o.exr.find('%') == std::string::npos) bad("-o", "the output pattern needs a frame number field such as %04d");
   }
   return o;

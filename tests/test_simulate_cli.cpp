@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -105,4 +106,53 @@ TEST(SimulateCli, BadBarkSettingsNameTheirPath) {
 }
 
 }  // namespace
+
+// Coverage (alpha sum) of a rendered frame: how much of the image the tree fills.
+double coverage(const std::string& exr) {
+  auto in = OIIO::ImageInput::open(exr);
+  if (!in) return -1;
+  const OIIO::ImageSpec spec = in->spec();
+  std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
+  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data());
+  const int a = spec.channelindex("beauty.A");
+  if (a < 0) return -1;
+  double sum = 0;
+  for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p) sum += px[p * spec.nchannels + size_t(a)];
+  return sum;
+}
+
+TEST(GrowthCli, FramesFollowTheSimulationAndTheTrunkThickens) {
+  const std::string dir = test::temp_dir("growth_ok");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, R"({"camera": {"position": [0, 0.15, 0.6], "look_at": [0, 0.15, 0], "fov_deg": 30},
+    "lights": [{"type": "environment", "color": [1, 1, 1]}],
+    "objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 0.3, 0]], "radius": [0.05],
+                 "bark": {"model": "strips", "preset": "fissured", "steps": 60, "growth_rate": 1.01, "strip_width": 0.01}}]})");
+  const auto r = test::run_phellem("growth " + scene + " --frames 3 -o " + dir + "/f_%02d.exr --res 48x48 --spp 1 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const double c0 = coverage(dir + "/f_00.exr"), c2 = coverage(dir + "/f_02.exr");
+  ASSERT_GT(c0, 0);
+  // Girth at frame k is G^-(T - t_k) of the final one: 1.01^-40 = 0.67 for the first frame.
+  EXPECT_NEAR(c0 / c2, std::pow(1.01, -40), 0.08);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/f_03.exr"));
+  // Continuity: the last frame is the whole simulation, the same image `render` makes.
+  const auto still = test::run_phellem("render " + scene + " -o " + dir + "/still.exr --res 48x48 --spp 1 --quiet");
+  ASSERT_EQ(still.exit_code, 0) << still.output;
+  EXPECT_EQ(coverage(dir + "/still.exr"), c2);
+  auto a = OIIO::ImageInput::open(dir + "/still.exr"), b = OIIO::ImageInput::open(dir + "/f_02.exr");
+  std::vector<float> pa(48 * 48 * a->spec().nchannels), pb(pa.size());
+  a->read_image(0, 0, 0, a->spec().nchannels, OIIO::TypeDesc::FLOAT, pa.data());
+  b->read_image(0, 0, 0, b->spec().nchannels, OIIO::TypeDesc::FLOAT, pb.data());
+  EXPECT_EQ(pa, pb);
+}
+
+TEST(GrowthCli, ASceneWithoutStripBarkIsRefused) {
+  const std::string dir = test::temp_dir("growth_none");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})");
+  const auto r = test::run_phellem("growth " + scene + " --frames 2 -o " + dir + "/f_%02d.exr --res 8x8 --spp 1 --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("no tree object has a \"bark\""), std::string::npos) << r.output;
+}
+
 }  // namespace phellem

@@ -1,0 +1,48 @@
+#include "cli/frame_sequence.h"
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "renderer/atomic_file.h"
+#include "renderer/errors.h"
+
+namespace phellem {
+
+void check_frame_outputs(const cli::Options& o) {
+  size_t n = 0;
+  for (size_t i = 0; i + 1 < o.exr.size(); ++i)
+    if (o.exr[i] == '%') {
+      if (o.exr[i + 1] == '%') {
+        ++i;
+        continue;
+      }
+      ++n;
+      size_t j = i + 1;
+      while (j < o.exr.size() && std::isdigit(static_cast<unsigned char>(o.exr[j]))) ++j;
+      if (j >= o.exr.size() || o.exr[j] != 'd') throw UserError("", "-o", "only %d-style frame fields (e.g. %04d) are allowed");
+    }
+  if (n != 1) throw UserError("", "-o", "the pattern needs exactly one frame field such as %04d");
+  if (!o.mp4.empty() && std::system("command -v ffmpeg >/dev/null 2>&1") != 0)
+    throw UserError("", "--mp4", "ffmpeg is not installed (apt-get install ffmpeg), so no MP4 can be encoded");
+}
+
+std::string frame_name(const std::string& pattern, int frame) {
+  std::vector<char> buf(pattern.size() + 64);
+  std::snprintf(buf.data(), buf.size(), pattern.c_str(), frame);
+  return buf.data();
+}
+
+void encode_mp4(const cli::Options& o) {
+  const std::string png_pattern = std::filesystem::path(o.exr).replace_extension(".png").string();
+  write_atomically(o.mp4, [&](const std::string& tmp) {
+    const std::string cmd = "ffmpeg -loglevel error -y -framerate 24 -i '" + png_pattern +
+                            "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 '" + tmp + "'";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("ffmpeg failed to encode " + o.mp4);
+  });
+}
+
+}  // namespace phellem

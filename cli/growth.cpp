@@ -1,0 +1,68 @@
+#include "cli/growth.h"
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "cli/frame_sequence.h"
+#include "cli/render_job.h"
+#include "renderer/errors.h"
+#include "renderer/image_output.h"
+#include "renderer/render_scene.h"
+#include "renderer/strip_bark_tree.h"
+
+namespace phellem {
+
+namespace {
+
+void scale_radii(std::vector<BranchDesc>& branches, float k) {
+  for (BranchDesc& b : branches) {
+    for (float& r : b.radius) r *= k;
+    scale_radii(b.branches, k);
+  }
+}
+
+}  // namespace
+
+int run_growth(const cli::Options& o) {
+  check_view(o);
+  check_frame_outputs(o);
+  Loaded l = load(o);
+  std::vector<std::pair<size_t, std::unique_ptr<TreeStripSimulation>>> sims;
+  for (size_t oi = 0; oi < l.desc.objects.size(); ++oi) {
+    const ObjectDesc& obj = l.desc.objects[oi];
+    if (obj.type == ObjectType::Tree && obj.tree.strip_bark)
+      sims.emplace_back(oi, std::make_unique<TreeStripSimulation>(obj, oi, o.seed));
+  }
+  if (sims.empty()) throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
+  const int frames = *o.frames;
+  const bool png = o.png_frames || !o.mp4.empty();
+  for (int f = 0; f < frames; ++f) {
+    SceneDesc frame_desc = l.desc;
+    SceneBuildOptions build;
+    build.progress = !o.quiet;
+    for (auto& [oi, sim] : sims) {
+      const int step = int(std::lround(double(sim->steps_total()) * double(f + 1) / double(frames)));
+      sim->run_to(step, !o.quiet);
+      // The simulation lives on the final shape (shrinking strategy); the frame shows the tree
+      // at the girth of this step.
+      const float k = float(sim->girth_scale());
+      TreeDesc& tree = frame_desc.objects[oi].tree;
+      for (float& r : tree.radius) r *= k;
+      scale_radii(tree.branches, k);
+      build.bark[oi] = sim->surfaces();
+    }
+    RenderScene scene(frame_desc, frame_desc.camera, l.width, l.height, &build);
+    const Camera camera(frame_desc.camera, l.width, l.height);
+    RenderSettings s = l.settings;
+    s.progress_label = "frame " + std::to_string(f + 1) + "/" + std::to_string(frames);
+    const RenderResult res = render_image(scene, camera, l.width, l.height, s);
+    const std::string exr = frame_name(o.exr, f);
+    write_exr(res.film, exr);
+    if (png) write_png(res.film, std::filesystem::path(exr).replace_extension(".png").string(), o.view.empty() ? default_view() : o.view);
+  }
+  if (!o.mp4.empty()) encode_mp4(o);
+  return 0;
+}
+
+}  // namespace phellem

@@ -1,0 +1,26 @@
+#include "cli/render_job.h"
+
+#include "renderer/image_output.h"
+#include "renderer/scene_parser.h"
+
+namespace phellem {
+
+Loaded load(const cli::Options& o) {
+  Loaded l{o.scene.empty() ? default_scene() : load_scene_file(o.scene), {}, 0, 0};
+  const RenderDesc& r = l.desc.render;
+  l.width = o.width.value_or(r.width);
+  l.height = o.height.value_or(r.height);
+  l.settings.spp = o.spp.value_or(r.spp);
+  l.settings.max_depth = r.max_depth;
+  l.settings.seed = o.seed.value_or(r.seed);
+  l.settings.filter = r.filter;
+  l.settings.threads = o.threads.value_or(0);
+  l.settings.progress = !o.quiet;
+  return l;
+}
+
+void check_view(const cli::Options& o) {
+  if (!o.view.empty()) require_view(o.view);
+}
+
+}  // namespace phellem

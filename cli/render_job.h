@@ -1,0 +1,21 @@
+// What every rendering command loads first: the scene (or the embedded default) and the
+// render settings with the command line's overrides.
+#pragma once
+
+#include "cli/options.h"
+#include "renderer/integrator.h"
+#include "renderer/scene_desc.h"
+
+namespace phellem {
+
+struct Loaded {
+  SceneDesc desc;
+  RenderSettings settings;
+  int width = 0, height = 0;
+};
+
+Loaded load(const cli::Options& o);
+// An unknown --view is a UserError before any work starts.
+void check_view(const cli::Options& o);
+
+}  // namespace phellem
