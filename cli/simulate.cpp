@@ -62,7 +62,8 @@ int run_simulate(const cli::Options& o) {
   long long strips = 0, fractures = 0, created = 0, propagated = 0, merged = 0;
   int steps = 0, outputs = 0;
   nlohmann::json files = nlohmann::json::array();
-  long long crossings = 0;
+  long long crossings = 0, mesh_triangles = 0;
+  nlohmann::json meshes = nlohmann::json::array();
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
     const ObjectDesc& obj = desc.objects[oi];
     if (obj.type != ObjectType::Tree || !obj.tree.strip_bark) continue;
@@ -76,6 +77,11 @@ int run_simulate(const cli::Options& o) {
       const bark::FractureField field = sim.field(k, o.width.value_or(0), o.height.value_or(0));
       const std::string file = (dir / (base + "_" + sim.part_name(k) + ".exr")).string();
       write_field(field, file);
+      const std::vector<GlbPart> mesh = sim.mesh(k);
+      const std::string glb = (dir / (base + "_" + sim.part_name(k) + ".glb")).string();
+      write_glb(glb, base + "_" + sim.part_name(k), mesh);
+      for (const GlbPart& p : mesh) mesh_triangles += long(p.mesh.triangle_count());
+      meshes.push_back(glb);
       t_dress += since(td);
       const bark::StripModel& model = sim.bark().model(k);
       strips += long(model.strips().size());
@@ -104,6 +110,8 @@ int run_simulate(const cli::Options& o) {
                         {"merges", merged},
                         {"junction_crossings", crossings},
                         {"outputs", files},
+                        {"meshes", meshes},
+                        {"mesh_triangles", mesh_triangles},
                         {"time_s", {{"total", since(t0)}, {"simulate", t_sim}, {"dress", t_dress}}}};
     write_atomically(o.stats, [&](const std::string& tmp) {
       std::ofstream f(tmp);

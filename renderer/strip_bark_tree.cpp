@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
+#include "bark/dressing/fracture_mesh.h"
 #include "renderer/errors.h"
 #include "renderer/progress.h"
 
@@ -57,6 +59,54 @@ bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
   const double C0 = C * model.scale_at_step(0) / model.scale_at_step(model.steps_done());
   bark::dress_colors(f, desc_->colors, desc_->depth.max_depth, C0);
   return f;
+}
+
+std::vector<GlbPart> TreeStripSimulation::mesh(size_t k, int W, int H) const {
+  const bark::StripModel& model = sim_->model(k);
+  if (W <= 0 || H <= 0) {
+    double C = 0;
+    for (const auto& st : model.strips()) C += st.circumference / double(model.strips().size());
+    const double texel = model.domain().strip_width / 2;
+    W = std::clamp(int(std::lround(C / model.scale_at_step(model.steps_done()) / texel)), 32, 4096);
+    H = std::clamp(int(std::lround(model.domain().length / texel)), 8, 4096);
+  }
+  const bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
+  const bark::FractureMesh fm = bark::mesh_fracture_field(f, desc_->depth.max_depth);
+  const bark::GeneralizedCylinder& cyl = *parts_[k].cylinder;
+  MeshData all;
+  for (size_t v = 0; v < fm.param.size(); ++v) {
+    const double s = fm.param[v].y() / H, theta = 2 * M_PI * fm.param[v].x() / W;
+    const Eigen::Vector3d p = cyl.position(s, theta) - cyl.normal(s, theta) * double(fm.depth[v]);
+    all.positions.push_back(p.cast<float>());
+    all.uvs.emplace_back(float(fm.param[v].x() / W), float(s));
+  }
+  for (const auto& t : fm.triangles) all.indices.insert(all.indices.end(), {uint32_t(t[0]), uint32_t(t[1]), uint32_t(t[2])});
+  compute_vertex_normals(all);
+  // The seam's two columns of vertices (θ = 0 and 2π) share their normal.
+  std::map<double, std::pair<int, int>> twins;
+  for (size_t v = 0; v < fm.param.size(); ++v) {
+    if (fm.param[v].x() == 0) twins[fm.param[v].y()].first = int(v) + 1;
+    if (fm.param[v].x() == W) twins[fm.param[v].y()].second = int(v) + 1;
+  }
+  for (const auto& [y, pair] : twins)
+    if (pair.first && pair.second) {
+      const Vec3f n = (all.normals[pair.first - 1] + all.normals[pair.second - 1]).normalized();
+      all.normals[pair.first - 1] = all.normals[pair.second - 1] = n;
+    }
+  const bark::FieldColors& c = desc_->colors;
+  std::vector<GlbPart> parts(2);
+  parts[0].name = "epidermis";
+  parts[0].base_color = Color(c.epidermis.base.x(), c.epidermis.base.y(), c.epidermis.base.z());
+  parts[1].name = "fracture";
+  parts[1].base_color = Color(c.fracture.base.x(), c.fracture.base.y(), c.fracture.base.z());
+  for (GlbPart& p : parts) {
+    p.mesh.positions = all.positions;
+    p.mesh.normals = all.normals;
+    p.mesh.uvs = all.uvs;
+  }
+  for (size_t t = 0; t < fm.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) parts[fm.fracture[t] ? 1 : 0].mesh.indices.push_back(uint32_t(fm.triangles[t][i]));
+  return parts;
 }
 
 std::vector<std::shared_ptr<const bark::BarkSurface>> TreeStripSimulation::surfaces() const {

@@ -12,6 +12,7 @@
 #include "bark/dressing/bark_surface.h"
 #include "bark/dressing/field_color.h"
 #include "bark/strips/tree_bark.h"
+#include "renderer/gltf_writer.h"
 #include "renderer/scene_desc.h"
 #include "renderer/strip_bark_desc.h"
 #include "renderer/tree_surface.h"
@@ -42,6 +43,10 @@ class TreeStripSimulation {
   // The dressed field of part k in the current state; 0 × 0 picks the scene's resolution or,
   // without one, texels a quarter of a strip wide.
   bark::FractureField field(size_t k, int width = 0, int height = 0) const;
+  // The bark mesh of part k with the fracture geometry inserted (bark::mesh_fracture_field on
+  // the field at `width` × `height`, 0: texels half a strip wide), mapped onto the cylinder and
+  // sunk by the depth; "epidermis" and "fracture" parts. `triangles` receives the count.
+  std::vector<GlbPart> mesh(size_t k, int width = 0, int height = 0) const;
   // Every part's BarkSurface in the current state, at the automatic resolution.
   std::vector<std::shared_ptr<const bark::BarkSurface>> surfaces() const;
 

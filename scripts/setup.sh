@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   build-essential cmake ccache pkg-config git
   libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev
-  libeigen3-dev libtinygltf-dev libtinyobjloader-dev libtbb-dev nlohmann-json3-dev
+  libeigen3-dev libtinygltf-dev libtinyobjloader-dev libtbb-dev nlohmann-json3-dev libcgal-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 

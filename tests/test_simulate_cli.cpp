@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "renderer/mesh_io.h"
 #include "test_util.h"
 
 namespace phellem {
@@ -64,6 +65,28 @@ TEST(SimulateCli, WritesAFractureFieldPerCylinderWithTheDocumentedChannels) {
   EXPECT_GT(j["fractures"].get<int>(), 0);
   EXPECT_TRUE(j["time_s"].contains("simulate"));
   EXPECT_TRUE(j["time_s"].contains("dress"));
+  // The bark meshes read back through Phellem's own glTF loader: epidermis and fracture
+  // primitives, every vertex within [r − max_depth, r] of the axis (trunk radius 0.05 → 0.04).
+  long long triangles = 0;
+  for (const char* part : {"t_trunk.glb", "t_branch1.glb"}) {
+    const LoadedModel model = load_gltf(dir + "/out/" + part);
+    ASSERT_EQ(model.meshes.size(), 2u) << part;
+    ASSERT_EQ(model.materials.size(), 2u);
+    EXPECT_EQ(model.materials[0].name, "epidermis");
+    EXPECT_EQ(model.materials[1].name, "fracture");
+    for (const MeshData& m : model.meshes) {
+      triangles += (long long)m.triangle_count();
+      EXPECT_FALSE(m.normals.empty());
+    }
+    if (std::string(part) == "t_trunk.glb")
+      for (const MeshData& m : model.meshes)
+        for (const Vec3f& p : m.positions) {
+          const double r = std::hypot(p.x(), p.z());
+          ASSERT_LE(r, 0.05 + 1e-4);
+          ASSERT_GE(r, 0.04 - 0.02 - 1e-4);
+        }
+  }
+  EXPECT_EQ(triangles, j["mesh_triangles"].get<long long>());
 }
 
 TEST(SimulateCli, ThresholdOutsideItsRangeIsRefusedWithTheRange) {
