@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cmath>
 #include <filesystem>
 #include <numbers>
 
@@ -33,6 +34,47 @@ bark::ParamImage read_weakness_map(const JsonValue& v, const std::string& base_d
       img.values[size_t(spec.height - 1 - y) * spec.width + x] =
           std::clamp(all[(size_t(y) * spec.width + x) * spec.nchannels], 0.0f, 1.0f);
   return img;
+}
+
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+// A dressing sample: {"color", "variation", "grain"} (procedural) or {"image", "size"}.
+// Integer images are sRGB-encoded and linearized; float images (EXR) are scene-linear.
+bark::ColorSample read_sample(JsonObject o, const std::string& base_dir, bark::ColorSample s) {
+  if (auto v = o.get("color")) {
+    const Color c = v->color();
+    s.base = Eigen::Vector3f(c[0], c[1], c[2]);
+  }
+  if (auto v = o.get("variation")) s.variation = v->non_negative();
+  if (auto v = o.get("grain")) s.grain = v->positive();
+  if (auto v = o.get("image")) {
+    std::filesystem::path p(v->string());
+    if (p.is_relative()) p = std::filesystem::path(base_dir) / p;
+    if (!std::filesystem::is_regular_file(p)) v->fail("file not found: " + p.string());
+    auto in = OIIO::ImageInput::open(p.string());
+    if (!in) v->fail("cannot read image " + p.string() + ": " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
+      v->fail("cannot read image " + p.string() + ": " + in->geterror());
+    const bool encoded = spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
+    s.width = spec.width;
+    s.height = spec.height;
+    s.rgb.resize(size_t(spec.width) * spec.height * 3);
+    for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const float x = std::max(0.0f, all[i * spec.nchannels + size_t(std::min(c, spec.nchannels - 1))]);
+        s.rgb[i * 3 + size_t(c)] = encoded ? srgb_to_linear(x) : x;
+      }
+    const Vec2f size = o.at("size").vec2();
+    if (size.x() <= 0 || size.y() <= 0) o.fail("size", "size must be two positive lengths (m) that the image covers");
+    s.size_x = size.x();
+    s.size_y = size.y();
+  } else if (o.has("size")) {
+    o.fail("size", "size belongs with an image");
+  }
+  o.finish();
+  return s;
 }
 
 }  // namespace
@@ -129,6 +171,21 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint32
     else m.fail("profile", "unknown depth profile \"" + shape + "\"; allowed: v, u, box, round");
     if (auto w = m.get("max_depth")) d.depth.max_depth = w->positive();
     if (auto w = m.get("depth_per_width")) d.depth.depth_per_width = w->positive();
+    m.finish();
+  }
+  if (auto v = o.get("dressing")) {
+    JsonObject m = v->object();
+    if (auto w = m.get("epidermis")) d.colors.epidermis = read_sample(w->object(), base_dir, d.colors.epidermis);
+    if (auto w = m.get("fracture")) d.colors.fracture = read_sample(w->object(), base_dir, d.colors.fracture);
+    if (auto w = m.get("hardened")) d.colors.hardened = read_sample(w->object(), base_dir, d.colors.hardened);
+    if (auto w = m.get("depth_darkening")) {
+      d.colors.depth_darkening = w->non_negative();
+      if (d.colors.depth_darkening > 1) w->fail("depth_darkening must lie in [0, 1]");
+    }
+    if (auto w = m.get("interior_darkening")) {
+      d.colors.interior_darkening = w->non_negative();
+      if (d.colors.interior_darkening > 1) w->fail("interior_darkening must lie in [0, 1]");
+    }
     m.finish();
   }
   if (auto e = bark::validate(p)) o.fail(o.has(e->key) ? e->key : "", e->key + ": " + e->message);

@@ -178,4 +178,41 @@ TEST(GrowthCli, ASceneWithoutStripBarkIsRefused) {
   EXPECT_NE(r.output.find("no tree object has a \"bark\""), std::string::npos) << r.output;
 }
 
+TEST(SimulateCli, EpidermisImageSampleColoursTheBarkAndABadOneIsNamed) {
+  const std::string dir = test::temp_dir("simulate_dressing");
+  // A flat 8-bit sRGB sample of value 128: linear 0.2158 everywhere.
+  {
+    std::vector<unsigned char> px(4 * 4 * 3, 128);
+    auto out = OIIO::ImageOutput::create(dir + "/skin.png");
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(dir + "/skin.png", OIIO::ImageSpec(4, 4, 3, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px.data()));
+    out->close();
+  }
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, scene_with_bark(R"({"model": "strips", "preset": "fissured", "steps": 60, "growth_rate": 1.01,
+      "strip_width": 0.01, "dressing": {"epidermis": {"image": "skin.png", "size": [0.05, 0.05]}, "depth_darkening": 0}})"));
+  const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto in = OIIO::ImageInput::open(dir + "/out/t_trunk.exr");
+  ASSERT_TRUE(in);
+  const auto& spec = in->spec();
+  std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
+  ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+  const int c_open = spec.channelindex("opening"), c_r = spec.channelindex("color.R");
+  int epidermis = 0;
+  for (size_t p = 0; p < px.size(); p += size_t(spec.nchannels))
+    if (px[p + size_t(c_open)] == 0) {
+      EXPECT_NEAR(px[p + size_t(c_r)], 0.2158, 2e-3);
+      ++epidermis;
+    }
+  EXPECT_GT(epidermis, 100);
+
+  test::write_text(scene, scene_with_bark(R"({"model": "strips", "dressing": {"fracture": {"image": "missing.png", "size": [0.1, 0.1]}}})"));
+  const auto bad = test::run_phellem("simulate " + scene + " -o " + dir + "/out --quiet");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("/objects/0/bark/dressing/fracture/image"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("missing.png"), std::string::npos) << bad.output;
+}
+
 }  // namespace phellem
