@@ -23,7 +23,7 @@ measure() {  # scene -> "first_pixel_s bark_s tessellate_s bvh_s diced_triangles
     ./build/phellem render "$1" --res "$RES" --spp 1 -o "$out/r.exr" --quiet --stats "$out/s.json"
     fp+=("$(python3 -c "import json;t=json.load(open('$out/s.json'))['time_s'];print(t['load']+t['build'])")")
   done
-  last=$(python3 -c "import json;d=json.load(open('$out/s.json'));t=d['time_s'];print(t['bark'], t['tessellate'], t['bvh'], d['diced_triangles'], round(d['diced_mb'],1), round(d['embree_mb'],1), round(d['peak_rss_mb']))")
+  last=$(python3 -c "import json;d=json.load(open('$out/s.json'));t=d['time_s'];print(t['bark'], t['tessellate'], t['bvh'], d['diced_triangles'], round(d['geometry_mb'],1), round(d['embree_mb'],1), round(d['peak_rss_mb']))")
   echo "$(printf '%s\n' "${fp[@]}" | median) $last"
 }
 read -r fp_b bark_b tess_b bvh_b tri_b mb_b em_b rss_b <<<"$(measure scenes/strips_furrowed.json)"
@@ -34,6 +34,6 @@ printf "    of which bark sim+dress (s)  %10.2f | %10.2f\n" "$bark_b" "$bark_p"
 printf "    tessellation (s)             %10.2f | %10.2f\n" "$tess_b" "$tess_p"
 printf "    BVH (s)                      %10.2f | %10.2f\n" "$bvh_b" "$bvh_p"
 printf "  diced triangles                %10d | %10d   (ratio %.1f)\n" "$tri_b" "$tri_p" "$(python3 -c "print($tri_b/$tri_p)")"
-printf "  diced mesh (MB)                %10.1f | %10.1f\n" "$mb_b" "$mb_p"
+printf "  geometry incl. bark maps (MB)  %10.1f | %10.1f\n" "$mb_b" "$mb_p"
 printf "  Embree BVH (MB)                %10.1f | %10.1f\n" "$em_b" "$em_p"
 printf "  peak RSS (MB)                  %10d | %10d\n" "$rss_b" "$rss_p"
