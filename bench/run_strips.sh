@@ -11,7 +11,7 @@ median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 run() {  # scene, field resolution -> "simulate dress strips fractures" medians
   local sim=() dress=() s f
   for r in $(seq "$REPEAT"); do
-    ./build/phellem simulate "$1" -o "$out/fields" --res "$2" --quiet --stats "$out/s.json"
+    ./build/phellem simulate "$1" -o "$out/fields" --res "$2" --no-mesh --quiet --stats "$out/s.json"
     sim+=("$(python3 -c "import json;print(json.load(open('$out/s.json'))['time_s']['simulate'])")")
     dress+=("$(python3 -c "import json;print(json.load(open('$out/s.json'))['time_s']['dress'])")")
   done
@@ -21,6 +21,8 @@ run() {  # scene, field resolution -> "simulate dress strips fractures" medians
 echo "benchmark scene: 1000 strips x 500 steps, FractureField 4096x4096"
 read -r sim dress strips fr <<<"$(run bench/scenes/strips_trunk_1000x500.json 4096x4096)"
 echo "  simulate ${sim} s, dress ${dress} s (${strips} strips, ${fr} fractures)"
+./build/phellem simulate bench/scenes/strips_trunk_1000x500.json -o "$out/mesh" --quiet --stats "$out/m.json"
+python3 -c "import json;d=json.load(open('$out/m.json'));print('  bark mesh (.glb, once): %.1f s, %d triangles' % (d['time_s']['mesh'], d['mesh_triangles']))"
 echo
 echo "strips  steps  fractures  simulate_s  us_per_strip_step"
 for n in 250 500 1000 2000; do

@@ -28,7 +28,7 @@ std::string usage() {
          "                 [--degrees D] [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
          "  phellem growth SCENE.json --frames N -o DIR/frame_%04d.exr [--png] [--mp4 OUT.mp4]\n"
          "                 [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
-         "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--threads N] [--quiet]\n"
+         "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--no-mesh] [--threads N] [--quiet]\n"
          "  phellem --help | --version\n"
          "Without SCENE.json, `render` renders the embedded default scene. See README.md and\n"
          "docs/scene-format.md.\n";
@@ -74,6 +74,7 @@ Options parse(const std::vector<std::string>& args) {
       o.height = int(integer(a, v.substr(x + 1), 1, 32768));
     } else if (a == "--view") o.view = value();
     else if (a == "--quiet" || a == "-q") o.quiet = true;
+    else if (a == "--no-mesh" && o.command == "simulate") o.no_mesh = true;
     else if (!a.empty() && a[0] == '-') bad(a, "unknown option for `" + o.command + "`\n" + usage());
     else if (o.scene.empty()) o.scene = a;
     else bad(a, "more than one scene file given");

@@ -17,6 +17,7 @@ struct Options {
   std::optional<float> degrees;
   std::string view;
   bool quiet = false;
+  bool no_mesh = false;  // simulate: skip the .glb bark meshes
 };
 
 Options parse(const std::vector<std::string>& args);

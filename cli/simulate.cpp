@@ -78,13 +78,6 @@ int run_simulate(const cli::Options& o) {
       const std::string file = (dir / (base + "_" + sim.part_name(k) + ".exr")).string();
       write_field(field, file);
       t_dress += since(td);
-      const auto tm = Clock::now();
-      const std::vector<GlbPart> mesh = sim.mesh(k);
-      const std::string glb = (dir / (base + "_" + sim.part_name(k) + ".glb")).string();
-      write_glb(glb, base + "_" + sim.part_name(k), mesh);
-      for (const GlbPart& p : mesh) mesh_triangles += long(p.mesh.triangle_count());
-      meshes.push_back(glb);
-      t_mesh += since(tm);
       const bark::StripModel& model = sim.bark().model(k);
       strips += long(model.strips().size());
       std::set<int32_t> roots;
@@ -97,6 +90,15 @@ int run_simulate(const cli::Options& o) {
       steps = std::max(steps, model.steps_total());
       ++outputs;
       files.push_back(file);
+      if (!o.no_mesh) {
+        const auto tm = Clock::now();
+        const std::vector<GlbPart> mesh = sim.mesh(k);
+        const std::string glb = (dir / (base + "_" + sim.part_name(k) + ".glb")).string();
+        write_glb(glb, base + "_" + sim.part_name(k), mesh);
+        for (const GlbPart& p : mesh) mesh_triangles += long(p.mesh.triangle_count());
+        meshes.push_back(glb);
+        t_mesh += since(tm);
+      }
     }
     crossings += long(sim.bark().crossings().size());
   }

@@ -192,8 +192,9 @@ TEST(SimulateCli, EpidermisImageSampleColoursTheBarkAndABadOneIsNamed) {
   const std::string scene = dir + "/scene.json";
   test::write_text(scene, scene_with_bark(R"({"model": "strips", "preset": "fissured", "steps": 60, "growth_rate": 1.01,
       "strip_width": 0.01, "dressing": {"epidermis": {"image": "skin.png", "size": [0.05, 0.05]}, "depth_darkening": 0}})"));
-  const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --quiet");
+  const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --no-mesh --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/t_trunk.glb"));  // --no-mesh
   auto in = OIIO::ImageInput::open(dir + "/out/t_trunk.exr");
   ASSERT_TRUE(in);
   const auto& spec = in->spec();
