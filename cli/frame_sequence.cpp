@@ -9,6 +9,7 @@
 
 #include "renderer/atomic_file.h"
 #include "renderer/errors.h"
+#include "renderer/image_output.h"
 
 namespace phellem {
 
@@ -34,6 +35,16 @@ std::string frame_name(const std::string& pattern, int frame) {
   std::vector<char> buf(pattern.size() + 64);
   std::snprintf(buf.data(), buf.size(), pattern.c_str(), frame);
   return buf.data();
+}
+
+void render_frame(const cli::Options& o, const Loaded& l, const RenderScene& scene, const Camera& camera, int frame, int frames) {
+  RenderSettings s = l.settings;
+  s.progress_label = "frame " + std::to_string(frame + 1) + "/" + std::to_string(frames);
+  const RenderResult res = render_image(scene, camera, l.width, l.height, s);
+  const std::string exr = frame_name(o.exr, frame);
+  write_exr(res.film, exr);
+  if (o.png_frames || !o.mp4.empty())
+    write_png(res.film, std::filesystem::path(exr).replace_extension(".png").string(), o.view.empty() ? default_view() : o.view);
 }
 
 void encode_mp4(const cli::Options& o) {

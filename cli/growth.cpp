@@ -1,13 +1,11 @@
 #include "cli/growth.h"
 
 #include <cmath>
-#include <filesystem>
 #include <memory>
 
 #include "cli/frame_sequence.h"
 #include "cli/render_job.h"
 #include "renderer/errors.h"
-#include "renderer/image_output.h"
 #include "renderer/render_scene.h"
 #include "renderer/strip_bark_tree.h"
 
@@ -36,7 +34,6 @@ int run_growth(const cli::Options& o) {
   }
   if (sims.empty()) throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
   const int frames = *o.frames;
-  const bool png = o.png_frames || !o.mp4.empty();
   for (int f = 0; f < frames; ++f) {
     SceneDesc frame_desc = l.desc;
     SceneBuildOptions build;
@@ -53,13 +50,7 @@ int run_growth(const cli::Options& o) {
       build.bark[oi] = sim->surfaces();
     }
     RenderScene scene(frame_desc, frame_desc.camera, l.width, l.height, &build);
-    const Camera camera(frame_desc.camera, l.width, l.height);
-    RenderSettings s = l.settings;
-    s.progress_label = "frame " + std::to_string(f + 1) + "/" + std::to_string(frames);
-    const RenderResult res = render_image(scene, camera, l.width, l.height, s);
-    const std::string exr = frame_name(o.exr, f);
-    write_exr(res.film, exr);
-    if (png) write_png(res.film, std::filesystem::path(exr).replace_extension(".png").string(), o.view.empty() ? default_view() : o.view);
+    render_frame(o, l, scene, Camera(frame_desc.camera, l.width, l.height), f, frames);
   }
   if (!o.mp4.empty()) encode_mp4(o);
   return 0;

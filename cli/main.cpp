@@ -95,16 +95,9 @@ int run_turntable(const cli::Options& o) {
   RenderScene scene(l.desc, l.desc.camera, l.width, l.height, &build);
   const int frames = *o.frames;
   const float degrees = o.degrees.value_or(360.0f);
-  const bool png = o.png_frames || !o.mp4.empty();
   for (int f = 0; f < frames; ++f) {
-    const CameraDesc cd = Camera::orbit(l.desc.camera, degrees * float(f) / float(frames));
-    const Camera camera(cd, l.width, l.height);
-    RenderSettings s = l.settings;
-    s.progress_label = "frame " + std::to_string(f + 1) + "/" + std::to_string(frames);
-    const RenderResult res = render_image(scene, camera, l.width, l.height, s);
-    const std::string exr = frame_name(o.exr, f);
-    write_exr(res.film, exr);
-    if (png) write_png(res.film, std::filesystem::path(exr).replace_extension(".png").string(), o.view.empty() ? default_view() : o.view);
+    const Camera camera(Camera::orbit(l.desc.camera, degrees * float(f) / float(frames)), l.width, l.height);
+    render_frame(o, l, scene, camera, f, frames);
   }
   if (!o.mp4.empty()) encode_mp4(o);
   return 0;

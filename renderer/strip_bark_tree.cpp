@@ -39,37 +39,43 @@ void TreeStripSimulation::run_to(int step, bool progress) {
   bar.finish();
 }
 
-bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
-  const bark::StripModel& model = sim_->model(k);
+namespace {
+
+// Mean circumference of the model's strips in the current state (m).
+double mean_circumference(const bark::StripModel& model) {
   double C = 0;
   for (const auto& st : model.strips()) C += st.circumference / double(model.strips().size());
-  const double L = model.domain().length;
+  return C;
+}
+
+// Field size for texels 1/`texels_per_strip` of a strip wide at the final size, at least
+// min_w × min_h and at most max × max.
+void automatic_size(const bark::StripModel& model, int texels_per_strip, int min_w, int min_h, int max, int* W, int* H) {
+  const double texel = model.domain().strip_width / texels_per_strip;
+  const double C_final = mean_circumference(model) / model.scale_at_step(model.steps_done());
+  *W = std::clamp(int(std::lround(C_final / texel)), min_w, max);
+  *H = std::clamp(int(std::lround(model.domain().length / texel)), min_h, max);
+}
+
+}  // namespace
+
+bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
+  const bark::StripModel& model = sim_->model(k);
   if (W <= 0 || H <= 0) {
     W = desc_->field_width;
     H = desc_->field_height;
   }
-  if (W <= 0 || H <= 0) {
-    // Texels a quarter of a strip wide at the final size: fracture edges stay sharp in close-ups.
-    const double texel = model.domain().strip_width / 4;
-    const double C_final = C / model.scale_at_step(model.steps_done());
-    W = std::clamp(int(std::lround(C_final / texel)), 64, 8192);
-    H = std::clamp(int(std::lround(L / texel)), 16, 8192);
-  }
+  // Texels a quarter of a strip wide: fracture edges stay sharp in close-ups.
+  if (W <= 0 || H <= 0) automatic_size(model, 4, 64, 16, 8192, &W, &H);
   bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
-  const double C0 = C * model.scale_at_step(0) / model.scale_at_step(model.steps_done());
+  const double C0 = mean_circumference(model) * model.scale_at_step(0) / model.scale_at_step(model.steps_done());
   bark::dress_colors(f, desc_->colors, desc_->depth.max_depth, C0);
   return f;
 }
 
 std::vector<GlbPart> TreeStripSimulation::mesh(size_t k, int W, int H) const {
   const bark::StripModel& model = sim_->model(k);
-  if (W <= 0 || H <= 0) {
-    double C = 0;
-    for (const auto& st : model.strips()) C += st.circumference / double(model.strips().size());
-    const double texel = model.domain().strip_width / 2;
-    W = std::clamp(int(std::lround(C / model.scale_at_step(model.steps_done()) / texel)), 32, 4096);
-    H = std::clamp(int(std::lround(model.domain().length / texel)), 8, 4096);
-  }
+  if (W <= 0 || H <= 0) automatic_size(model, 2, 32, 8, 4096, &W, &H);
   const bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
   const bark::FractureMesh fm = bark::mesh_fracture_field(f, desc_->depth.max_depth);
   const bark::GeneralizedCylinder& cyl = *parts_[k].cylinder;
