@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip_model.h"
@@ -26,7 +27,9 @@ double StripModel::centre_theta(size_t j, size_t i) const {
 void StripModel::measure_fractures() {
   // Each fracture's element count and summed width: its length is count × strip width, its
   // mean width the Inglis ratio's denominator (sec. 3.2.4: "we used the mean fracture width").
-  // scan_strip listed (root, width) per strip in the parallel phase; sums go in strip order.
+  // Measured at the end of a step (plasticity listed (root, width) per strip; sums go in strip
+  // order) and kept up to date through the next step's sweep as fractures are created,
+  // extended and merged; widening by the next step's growth shows in the step after.
   fracture_count_.assign(skeleton_.ids(), 0.0);
   fracture_width_.assign(skeleton_.ids(), 0.0);
   for (const auto& part : widths_)
@@ -73,25 +76,31 @@ void StripModel::propagate_from(size_t j) {
     return j > 0 ? long(j - 1) : (domain_.wrap_s ? long(n - 1) : -1);
   };
   StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
-  // Free ends of this strip (listed after growth, plus those made since in the sweep); the
-  // element index of each is looked up only once one passes the Inglis test.
+  // Free ends of this strip (listed after growth, plus those made since in the sweep).
   struct Tip {
     size_t element;
     int32_t fe;
   };
   std::vector<Tip> tips;
-  std::vector<int32_t> where;
-  for (int32_t f : tips_[j]) {
-    const FractureElement& fe = strips_[j].fractures[size_t(f)];
+  for (const FreeEnd& f : tips_[j]) {
+    const FractureElement& fe = strips_[j].fractures[size_t(f.fracture)];
     if (!fe.active || (fe.up >= 0 && fe.down >= 0) || !sharp(fe.id)) continue;
-    if (where.empty()) {
-      const Strip& s = strips_[j];
-      where.assign(s.fractures.size(), -1);
-      for (size_t i = 0; i < s.size(); ++i)
-        if (s.elements[i].kind == ElementKind::Fracture) where[size_t(s.elements[i].fracture)] = int32_t(i);
-    }
-    tips.push_back({size_t(where[size_t(f)]), f});
+    tips.push_back({size_t(f.element), f.fracture});
   }
+  // Element index of fracture element `fe` of this strip, searched outwards from arc position
+  // x (links join nearby elements), then over the whole strip.
+  const Strip& here = strips_[j];
+  auto element_of = [&](int32_t fe, double x) -> long {
+    const long ne = long(here.size()), at = long(element_at(j, x));
+    for (long k = 0; k < std::min(ne, 33L); ++k) {
+      long i = at + (k % 2 ? (k + 1) / 2 : -k / 2);
+      i = i < 0 ? i + ne : i >= ne ? i - ne : i;
+      if (here.elements[size_t(i)].kind == ElementKind::Fracture && here.elements[size_t(i)].fracture == fe) return i;
+    }
+    for (long i = 0; i < ne; ++i)
+      if (here.elements[size_t(i)].kind == ElementKind::Fracture && here.elements[size_t(i)].fracture == fe) return i;
+    return -1;
+  };
   for (const Tip& tip : tips) {
     for (bool up : {true, false}) {
       FractureElement& src = strips_[j].fractures[size_t(tip.fe)];
@@ -112,26 +121,34 @@ void StripModel::propagate_from(size_t j) {
       // Base direction: parallel to the nearest fracture of the target strip whose influence
       // f(a'·dist/width) (a threshold test) reaches the tip; otherwise along the axis.
       const double x_straight = x_of(ts, theta);
-      double base_slope = 0;  // dθ/ds of the influencing fracture (radians per metre)
       double best = 1e300;
+      size_t nearest = SIZE_MAX;
       const size_t ne = st.size(), at = element_at(ts, x_straight);
       const size_t reach = std::min<size_t>(ne, 2 * kInfluenceElements + 1);
-      for (size_t k = 0; k < reach; ++k) {
-        const size_t gi = (at + ne + k - std::min(kInfluenceElements, ne / 2)) % ne;
-        const Element& ge = st.elements[gi];
-        if (ge.kind != ElementKind::Fracture) continue;
-        const FractureElement& g = st.fractures[size_t(ge.fracture)];
-        if (!g.active) continue;
+      size_t gi = at + ne - std::min(kInfluenceElements, ne / 2);
+      if (gi >= ne) gi -= ne;
+      for (size_t k = 0; k < reach; ++k, gi = gi + 1 == ne ? 0 : gi + 1) {
+        // A fracture element is always active: hardening turns it back into epidermis.
+        if (st.elements[gi].kind != ElementKind::Fracture) continue;
         const double gw = st.length(gi);
         double d = std::abs(st.x[gi] + 0.5 * gw - x_straight);
-        if (st.cyclic) d = std::min(d, st.circumference - std::fmod(d, st.circumference));
+        if (st.cyclic) {
+          if (d >= st.circumference) d -= std::floor(d / st.circumference) * st.circumference;
+          d = std::min(d, st.circumference - d);
+        }
         if (gw <= 0 || params_.influence * d >= gw || d >= best) continue;
         best = d;
-        // g's own direction, from its element back in our strip, if it continues there.
+        nearest = gi;
+      }
+      // The influencing fracture's own direction, from its element back in our strip, if it
+      // continues there.
+      double base_slope = 0;  // dθ/ds of the influencing fracture (radians per metre)
+      if (nearest != SIZE_MAX) {
+        const FractureElement& g = st.fractures[size_t(st.elements[nearest].fracture)];
         const int32_t back = up ? g.down : g.up;
-        base_slope = 0;
-        if (back >= 0 && size_t(back) < where.size() && where[size_t(back)] >= 0)
-          base_slope = wrap_angle(centre_theta(ts, gi) - centre_theta(j, size_t(where[size_t(back)]))) / ws * (up ? 1.0 : -1.0);
+        const double theta_g = centre_theta(ts, nearest);
+        const long bi = back >= 0 ? element_of(back, x_of(j, theta_g)) : -1;
+        if (bi >= 0) base_slope = wrap_angle(theta_g - centre_theta(j, size_t(bi))) / ws * (up ? 1.0 : -1.0);
       }
       // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
       const double radius = st.circumference / kTwoPi;

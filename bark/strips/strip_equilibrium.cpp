@@ -8,35 +8,6 @@ namespace phellem::bark {
 
 namespace {
 
-struct Scratch {
-  std::vector<double> lower, diag, upper, rhs, cprime;  // tridiagonal system and elimination
-  std::vector<double> ta, u;  // cyclic strips: anchor tensions T^a_i, Sherman–Morrison vector u
-};
-
-// Thomas algorithm for a tridiagonal system (lower[0] and upper[n-1] unused); the matrix is
-// symmetric positive definite here, so no pivoting is needed. Solves in place into `rhs`.
-void thomas(const std::vector<double>& lower, const std::vector<double>& diag, const std::vector<double>& upper,
-            std::vector<double>& rhs, std::vector<double>& cprime, size_t n) {
-  cprime.resize(n);
-  double denom = diag[0];
-  cprime[0] = upper[0] / denom;
-  rhs[0] /= denom;
-  for (size_t i = 1; i < n; ++i) {
-    denom = diag[i] - lower[i] * cprime[i - 1];
-    cprime[i] = upper[i] / denom;
-    rhs[i] = (rhs[i] - lower[i] * rhs[i - 1]) / denom;
-  }
-  for (size_t i = n - 1; i-- > 0;) rhs[i] -= cprime[i] * rhs[i + 1];
-}
-
-// Anchor of node j for a cyclic strip, unwrapped: a_{j+n} = a_j + C.
-double anchor_at(const Strip& s, long j) {
-  const long n = long(s.anchor.size());
-  long k = j % n;
-  if (k < 0) k += n;
-  return s.anchor[size_t(k)] + double((j - k) / n) * s.circumference;
-}
-
 void solve_uniform_tension(Strip& s) {
   // No attachment: every element carries the same tension (sec. 3.2.2).
   const size_t n = s.size();
@@ -64,6 +35,52 @@ void solve_uniform_tension(Strip& s) {
   for (size_t i = 0; i < n; ++i) x[i] -= mean;
 }
 
+// Eliminates the cyclic matrix: diagonal K_{j-1} + K_j + K_a,j, off-diagonals -K_j between
+// nodes j and j+1, corners -K_{n-1}. Sherman–Morrison: A = A' + u vᵀ with
+// u = (γ, 0, …, 0, α), v = (1, 0, …, 0, β/γ), α = β = -K_{n-1}, γ = -A[0][0]; A' is
+// tridiagonal with A'[0][0] = A[0][0] - γ and A'[n-1][n-1] = A[n-1][n-1] - αβ/γ.
+void factor_cyclic(const Strip& s, EquilibriumFactor& f) {
+  const size_t n = s.size();
+  auto k = [&](size_t i) { return s.elements[i].stiffness; };
+  f.inv.resize(n);
+  f.cprime.resize(n);
+  f.u.assign(n, 0.0);
+  const double alpha = -k(n - 1), beta = alpha;
+  const double gamma = -(k(n - 1) + k(0) + s.attach[0]);
+  auto diag = [&](size_t j) {
+    double d = (j == 0 ? k(n - 1) : k(j - 1)) + k(j) + s.attach[j];
+    if (j == 0) d -= gamma;
+    if (j == n - 1) d -= alpha * beta / gamma;
+    return d;
+  };
+  f.u[0] = gamma;
+  f.u[n - 1] = alpha;
+  f.inv[0] = 1.0 / diag(0);
+  f.cprime[0] = -k(0) * f.inv[0];
+  f.u[0] *= f.inv[0];
+  for (size_t i = 1; i < n; ++i) {
+    const double l = -k(i - 1);  // symmetric: sub-diagonal equals the super-diagonal
+    f.inv[i] = 1.0 / (diag(i) - l * f.cprime[i - 1]);
+    f.cprime[i] = -k(i) * f.inv[i];
+    f.u[i] = (f.u[i] - l * f.u[i - 1]) * f.inv[i];
+  }
+  for (size_t i = n - 1; i-- > 0;) f.u[i] -= f.cprime[i] * f.u[i + 1];
+  f.denominator = 1.0 + f.u[0] + beta * f.u[n - 1] / gamma;
+}
+
+// Eliminates the open strip's matrix over the free nodes 1..n-1 (row r = node r + 1).
+void factor_open(const Strip& s, EquilibriumFactor& f) {
+  const size_t m = s.size() - 1;
+  auto k = [&](size_t i) { return s.elements[i].stiffness; };
+  f.inv.resize(m);
+  f.cprime.resize(m);
+  for (size_t r = 0; r < m; ++r) {
+    const double d = k(r) + k(r + 1) + s.attach[r + 1];
+    f.inv[r] = 1.0 / (r == 0 ? d : d + k(r) * f.cprime[r - 1]);
+    f.cprime[r] = -k(r + 1) * f.inv[r];
+  }
+}
+
 }  // namespace
 
 double Strip::original_epidermis() const {
@@ -78,7 +95,7 @@ double element_tension(const Strip& s, size_t i) {
   return e.stiffness * (s.length(i) - e.rest);
 }
 
-void solve_equilibrium(Strip& s) {
+void solve_equilibrium(Strip& s, EquilibriumFactor* factor) {
   const size_t n = s.size();
   if (n == 0) return;
   bool attached = false;
@@ -87,97 +104,69 @@ void solve_equilibrium(Strip& s) {
     solve_uniform_tension(s);
     return;
   }
-  thread_local Scratch w;
   // Unknowns: displacements u_j = x_j - a_j of the free nodes (better conditioned than x).
   // Tension at the anchors, T^a_i = K_i (a_{i+1} - a_i - l0_i), gives the right-hand side
-  // T^a_i - T^a_{i-1}; the matrix has K_{i-1} + K_i + K_a on its diagonal and -K on the
-  // off-diagonals.
+  // T^a_i - T^a_{i-1}.
   auto K = [&](size_t i) { return s.elements[i].stiffness; };
-  if (s.cyclic) {
-    auto Ta = [&](long i) {
-      const size_t k = size_t((i + long(n)) % long(n));
-      return K(k) * (anchor_at(s, i + 1) - anchor_at(s, i) - s.elements[k].rest);
-    };
-    if (n <= 2) {
-      // Node 0 and node 1 are each other's left and right neighbour: assemble 2×2 (or 1×1).
-      if (n == 1) {
-        s.x[0] = s.anchor[0];  // the single element closes on itself: tension is fixed by C
-        return;
-      }
-      const double k0 = K(0), k1 = K(1), a0 = s.attach[0], a1 = s.attach[1];
-      const double m00 = k0 + k1 + a0, m11 = k0 + k1 + a1, m01 = -(k0 + k1);
-      const double r0 = Ta(0) - Ta(-1), r1 = Ta(1) - Ta(0);
-      const double det = m00 * m11 - m01 * m01;
-      s.x[0] = s.anchor[0] + (r0 * m11 - m01 * r1) / det;
-      s.x[1] = s.anchor[1] + (m00 * r1 - m01 * r0) / det;
+  auto Ta = [&](size_t i) {  // element n-1 of a cyclic strip closes by C
+    const double next = i + 1 < s.anchor.size() ? s.anchor[i + 1] : s.anchor[0] + s.circumference;
+    return K(i) * (next - s.anchor[i] - s.elements[i].rest);
+  };
+  if (s.cyclic && n <= 2) {
+    // Node 0 and node 1 are each other's left and right neighbour: assemble 2×2 (or 1×1).
+    if (n == 1) {
+      s.x[0] = s.anchor[0];  // the single element closes on itself: tension is fixed by C
       return;
     }
-    // Assembly without modulo: Ta[i] = T^a_i for i = 0..n-1 (element n-1 closes by C).
-    w.ta.resize(n);  // T^a_i
-    for (size_t i = 0; i + 1 < n; ++i) w.ta[i] = K(i) * (s.anchor[i + 1] - s.anchor[i] - s.elements[i].rest);
-    w.ta[n - 1] = K(n - 1) * (s.anchor[0] + s.circumference - s.anchor[n - 1] - s.elements[n - 1].rest);
-    w.diag.resize(n);
-    w.rhs.resize(n);
-    w.upper.resize(n);  // off-diagonal -K_j between nodes j and j+1
-    for (size_t j = 0; j < n; ++j) w.upper[j] = -K(j);
-    w.diag[0] = K(n - 1) + K(0) + s.attach[0];
-    w.rhs[0] = w.ta[0] - w.ta[n - 1];
-    for (size_t j = 1; j < n; ++j) {
-      w.diag[j] = K(j - 1) + K(j) + s.attach[j];
-      w.rhs[j] = w.ta[j] - w.ta[j - 1];
-    }
-    // Sherman–Morrison: A = A' + u vᵀ with the corner entries A[0][n-1] = A[n-1][0] = -K_{n-1};
-    // u = (γ, 0, …, 0, α), v = (1, 0, …, 0, β/γ). One elimination of A' serves both right-hand
-    // sides (r and u).
-    const double alpha = w.upper[n - 1], beta = alpha;
-    const double gamma = -w.diag[0];
-    w.diag[0] -= gamma;
-    w.diag[n - 1] -= alpha * beta / gamma;
-    w.cprime.resize(n);
-    w.u.resize(n);  // second right-hand side u
-    std::fill(w.u.begin(), w.u.end(), 0.0);
-    w.u[0] = gamma;
-    w.u[n - 1] = alpha;
-    double inv = 1.0 / w.diag[0];
-    w.cprime[0] = w.upper[0] * inv;
-    w.rhs[0] *= inv;
-    w.u[0] *= inv;
-    for (size_t i = 1; i < n; ++i) {
-      const double l = w.upper[i - 1];  // symmetric: sub-diagonal equals the super-diagonal
-      inv = 1.0 / (w.diag[i] - l * w.cprime[i - 1]);
-      w.cprime[i] = w.upper[i] * inv;
-      w.rhs[i] = (w.rhs[i] - l * w.rhs[i - 1]) * inv;
-      w.u[i] = (w.u[i] - l * w.u[i - 1]) * inv;
-    }
-    for (size_t i = n - 1; i-- > 0;) {
-      w.rhs[i] -= w.cprime[i] * w.rhs[i + 1];
-      w.u[i] -= w.cprime[i] * w.u[i + 1];
-    }
-    const double fact = (w.rhs[0] + beta * w.rhs[n - 1] / gamma) / (1.0 + w.u[0] + beta * w.u[n - 1] / gamma);
-    for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (w.rhs[j] - fact * w.u[j]);
+    const double k0 = K(0), k1 = K(1), a0 = s.attach[0], a1 = s.attach[1];
+    const double m00 = k0 + k1 + a0, m11 = k0 + k1 + a1, m01 = -(k0 + k1);
+    const double t0 = Ta(0), t1 = Ta(1);
+    const double r0 = t0 - t1, r1 = t1 - t0;
+    const double det = m00 * m11 - m01 * m01;
+    s.x[0] = s.anchor[0] + (r0 * m11 - m01 * r1) / det;
+    s.x[1] = s.anchor[1] + (m00 * r1 - m01 * r0) / det;
     return;
   }
-  // Open strip: nodes 0 and n are fixed; unknowns are nodes 1..n-1.
-  if (n < 2) return;
-  const size_t m = n - 1;
-  w.lower.assign(m, 0);
-  w.diag.assign(m, 0);
-  w.upper.assign(m, 0);
-  w.rhs.assign(m, 0);
-  // Fixed ends enter through the anchors: u_0 = x_0 - a_0 and u_n = x_n - a_n are known.
-  const double u0 = s.x[0] - s.anchor[0], un = s.x[n] - s.anchor[n];
-  auto Ta = [&](size_t i) { return K(i) * (s.anchor[i + 1] - s.anchor[i] - s.elements[i].rest); };
-  for (size_t j = 1; j <= m; ++j) {
-    const size_t r = j - 1;
-    w.diag[r] = K(j - 1) + K(j) + s.attach[j];
-    w.lower[r] = -K(j - 1);
-    w.upper[r] = -K(j);
-    w.rhs[r] = Ta(j) - Ta(j - 1);
+  if (!s.cyclic && n < 2) return;  // both nodes fixed
+  thread_local EquilibriumFactor scratch_factor;
+  thread_local std::vector<double> rhs;
+  EquilibriumFactor& f = factor ? *factor : scratch_factor;
+  if (!factor || !f.valid) {
+    if (s.cyclic)
+      factor_cyclic(s, f);
+    else
+      factor_open(s, f);
+    f.valid = factor != nullptr;
   }
-  w.rhs[0] += K(0) * u0;
-  w.rhs[m - 1] += K(n - 1) * un;
-  thomas(w.lower, w.diag, w.upper, w.rhs, w.cprime, m);
-  for (size_t j = 1; j <= m; ++j) s.x[j] = s.anchor[j] + w.rhs[j - 1];
+  const std::vector<double>& inv = f.inv;
+  const std::vector<double>& cp = f.cprime;
+  if (s.cyclic) {
+    rhs.resize(n);
+    double prev = Ta(n - 1);
+    for (size_t j = 0; j < n; ++j) {
+      const double t = Ta(j);
+      rhs[j] = t - prev;
+      prev = t;
+    }
+    rhs[0] *= inv[0];
+    for (size_t i = 1; i < n; ++i) rhs[i] = (rhs[i] + K(i - 1) * rhs[i - 1]) * inv[i];
+    for (size_t i = n - 1; i-- > 0;) rhs[i] -= cp[i] * rhs[i + 1];
+    const double beta = -K(n - 1), gamma = -(K(n - 1) + K(0) + s.attach[0]);
+    const double fact = (rhs[0] + beta * rhs[n - 1] / gamma) / f.denominator;
+    for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (rhs[j] - fact * f.u[j]);
+    return;
+  }
+  // Open strip: nodes 0 and n are fixed; unknowns are nodes 1..n-1. The fixed ends enter
+  // through their known displacements u_0 = x_0 - a_0 and u_n = x_n - a_n.
+  const size_t m = n - 1;
+  rhs.resize(m);
+  for (size_t r = 0; r < m; ++r) rhs[r] = Ta(r + 1) - Ta(r);
+  rhs[0] += K(0) * (s.x[0] - s.anchor[0]);
+  rhs[m - 1] += K(n - 1) * (s.x[n] - s.anchor[n]);
+  rhs[0] *= inv[0];
+  for (size_t r = 1; r < m; ++r) rhs[r] = (rhs[r] + K(r) * rhs[r - 1]) * inv[r];
+  for (size_t r = m - 1; r-- > 0;) rhs[r] -= cp[r] * rhs[r + 1];
+  for (size_t r = 0; r < m; ++r) s.x[r + 1] = s.anchor[r + 1] + rhs[r];
 }
 
 double equilibrium_residual(const Strip& s) {

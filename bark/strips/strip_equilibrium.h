@@ -1,9 +1,23 @@
 // Quasi-static equilibrium of one strip (Lefebvre & Neyret 2002, sec. 3.2.2 and 5.1).
 #pragma once
 
+#include <vector>
+
 #include "bark/strips/strip.h"
 
 namespace phellem::bark {
+
+// The elimination of one strip's equilibrium matrix, kept between solves. The matrix depends
+// only on the element and attachment stiffnesses, which change when a strip breaks, hardens
+// or (with a non-constant K_f curve) when its fractures open; growth and plasticity only move
+// the anchors, i.e. the right-hand side. Whoever changes a stiffness clears `valid`; a solve
+// with a valid factor gives the same bits as one that eliminates again.
+struct EquilibriumFactor {
+  std::vector<double> inv, cprime;  // 1 / pivot and the eliminated super-diagonal
+  std::vector<double> u;            // cyclic strips: A'^-1 u of Sherman–Morrison
+  double denominator = 0;           // cyclic strips: 1 + vᵀ A'^-1 u
+  bool valid = false;
+};
 
 // Moves the nodes of `strip` to the exact equilibrium of its elements and attachment springs
 // (sec. 5.1):  -K_i (x_i - x_{i-1} - l0_i) + K_{i+1} (x_{i+1} - x_i - l0_{i+1}) - K_a (x_i - a_i) = 0
@@ -13,7 +27,8 @@ namespace phellem::bark {
 // and two Thomas sweeps, O(n). Without any attachment the equilibrium has one uniform
 // tension T = (C - Σ l0) / Σ 1/K (sec. 3.2.2) and the rigid rotation is fixed by keeping
 // the mean displacement from the anchors zero. Open strips keep both end nodes fixed.
-void solve_equilibrium(Strip& strip);
+// `factor` (optional) is used if valid, and built (and marked valid) otherwise.
+void solve_equilibrium(Strip& strip, EquilibriumFactor* factor = nullptr);
 
 // Largest nodal force imbalance relative to the largest force in the strip (element tension
 // or attachment force); 0 for a strip without free nodes.

@@ -1,10 +1,13 @@
 #include "bark/strips/strip_model.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <memory>
+#include <thread>
 
 #include "bark/strips/strip_equilibrium.h"
 
@@ -30,6 +33,7 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   over_.assign(n, 0);
   tips_.resize(n);
   widths_.resize(n);
+  factors_.resize(n);
   tbb::parallel_for(size_t(0), n, [&](size_t j) { init_strip(j); });
   // sec. 3.2.3: check S against the softest element actually built (strips narrower than
   // nominal on the concave side of bent limbs are softer).
@@ -41,7 +45,7 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
 }
 
 void StripModel::solve(size_t j) {
-  solve_equilibrium(strips_[j]);
+  solve_equilibrium(strips_[j], &factors_[j]);
   if (check_) residual_[j] = std::max(residual_[j], equilibrium_residual(strips_[j]));
 }
 
@@ -93,7 +97,11 @@ double StripModel::theta_of(size_t j, double x) const {
   const double C = c[size_t(m)];
   const double turns = std::floor(x / C);
   const double r = x - turns * C;
-  const int k = int(std::upper_bound(c.begin() + 1, c.end() - 1, r) - c.begin()) - 1;
+  // The bin with c[k] <= r < c[k + 1] (k <= m - 1): bins are nearly even, so start from the
+  // proportional guess and walk.
+  int k = std::clamp(int(r / C * m), 0, m - 1);
+  while (k > 0 && c[size_t(k)] > r) --k;
+  while (k < m - 1 && c[size_t(k) + 1] <= r) ++k;
   const double len = c[size_t(k) + 1] - c[size_t(k)];
   const double f = len > 0 ? (r - c[size_t(k)]) / len : 0.0;
   return kTwoPi * (turns + (k + f) / m);
@@ -105,8 +113,13 @@ size_t StripModel::element_at(size_t j, double x) const {
     const double C = s.circumference;
     x = s.x[0] + (x - s.x[0]) - std::floor((x - s.x[0]) / C) * C;
   }
-  const auto it = std::upper_bound(s.x.begin(), s.x.begin() + long(s.size()), x);
-  return size_t(std::max<long>(0, long(it - s.x.begin()) - 1));
+  // The last node at or before x (0 if none): start from the proportional guess and walk.
+  const long n = long(s.size());
+  const double span = (s.cyclic ? s.x[0] + s.circumference : s.x[size_t(n)]) - s.x[0];
+  long i = span > 0 ? std::clamp(long((x - s.x[0]) / span * double(n)), 0L, n - 1) : 0;
+  while (i > 0 && s.x[size_t(i)] > x) --i;
+  while (i + 1 < n && s.x[size_t(i) + 1] <= x) ++i;
+  return size_t(i);
 }
 
 void StripModel::init_strip(size_t j) {
@@ -149,6 +162,7 @@ void StripModel::update_attachment(size_t j) {
   // half of the epidermis on either side (fracture elements are not glued bark).
   Strip& s = strips_[j];
   const size_t n = s.size(), nodes = s.nodes();
+  factors_[j].valid = false;  // called whenever elements change
   s.attach.assign(nodes, 0.0);
   if (params_.attachment <= 0) return;
   const double k = params_.attachment / params_.element_length;
@@ -164,7 +178,8 @@ void StripModel::update_attachment(size_t j) {
 
 void StripModel::grow_strip(size_t j) {
   // The substrate grows from step t to t + 1 (shrinking strategy seen forwards, sec. 5.2): each
-  // anchor keeps its substrate point θ; fracture elements take K_f of their rest length.
+  // anchor keeps its substrate point θ. Stiffnesses and attachment are unchanged: plasticity
+  // already gave the fracture elements K_f of their rest length.
   Strip& s = strips_[j];
   const StripMetric& m = domain_.strips[j];
   auto& c = cum_[j];
@@ -182,14 +197,10 @@ void StripModel::grow_strip(size_t j) {
     for (size_t i = 0; i < theta.size(); ++i) s.anchor[i] = x_of(j, theta[i]);
   }
   s.circumference = c.back();
-  s.x = s.anchor;
-  if (!s.cyclic) {
+  if (!s.cyclic) {  // the solve moves every free node; open strips keep their ends on the substrate
     s.x.front() = 0;
     s.x.back() = s.circumference;
   }
-  for (Element& e : s.elements)
-    if (e.kind == ElementKind::Fracture) e.stiffness = params_.fracture_stiffness_at(e.rest);
-  update_attachment(j);
 }
 
 void StripModel::scan_strip(size_t j) {
@@ -197,15 +208,13 @@ void StripModel::scan_strip(size_t j) {
   const Strip& s = strips_[j];
   over_[j] = 0;
   tips_[j].clear();
-  widths_[j].clear();
   for (size_t i = 0; i < s.size(); ++i) {
     const Element& e = s.elements[i];
     if (e.kind == ElementKind::Epidermis) {
       over_[j] |= s.length(i) > e.rest * e.threshold;
     } else {
       const FractureElement& fe = s.fractures[size_t(e.fracture)];
-      if (fe.active && (fe.up < 0 || fe.down < 0)) tips_[j].push_back(e.fracture);
-      widths_[j].emplace_back(skeleton_.find(fe.id), s.length(i));
+      if (fe.active && (fe.up < 0 || fe.down < 0)) tips_[j].push_back({e.fracture, int32_t(i)});
     }
   }
 }
@@ -213,13 +222,18 @@ void StripModel::scan_strip(size_t j) {
 void StripModel::plasticity(size_t j) {
   // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
   // material fills the fractures, whose rest length becomes their current width.
+  // Also lists each fracture element's (fracture, width) for the next step's Inglis ratios.
   Strip& s = strips_[j];
   s.anchor = s.x;
+  widths_[j].clear();
   for (size_t i = 0; i < s.size(); ++i) {
     Element& e = s.elements[i];
     if (e.kind == ElementKind::Fracture) {
       e.rest = std::max(0.0, s.length(i));
-      e.stiffness = params_.fracture_stiffness_at(e.rest);
+      const double k = params_.fracture_stiffness_at(e.rest);
+      if (k != e.stiffness) factors_[j].valid = false;
+      e.stiffness = k;
+      widths_[j].emplace_back(skeleton_.find(s.fractures[size_t(e.fracture)].id), e.rest);
     }
   }
 }
@@ -228,28 +242,55 @@ void StripModel::step() {
   if (step_ >= params_.steps) return;
   const size_t n = strips_.size();
   exits_.clear();
-  skeleton_.flatten();  // find() is then one lookup in the parallel phase
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 8), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t j = r.begin(); j < r.end(); ++j) {
-      grow_strip(j);
-      solve(j);
-      scan_strip(j);
-    }
-  });
-  measure_fractures();
+  // Figure 8 as a wavefront in sweep order: a strip is grown and solved before the sweep
+  // reaches its neighbour, broken and propagated from in its turn, and finished (hardening,
+  // plasticity) as soon as its successor has propagated into it, so each strip is visited
+  // while its data is in cache. The sweep alternates direction every step. Growing a strip
+  // touches nothing but that strip, so a helper task grows strips ahead of the sweep while
+  // this thread sweeps; whoever claims a strip first grows it, so the result does not depend
+  // on the thread count (with one thread, the sweep grows every strip itself).
   const bool upward = step_ % 2 == 0;
+  const bool wrap = domain_.wrap_s && n > 1;
+  auto strip_at = [&](size_t k) { return upward ? k : n - 1 - k; };
+  const auto claimed = std::make_unique<std::atomic<char>[]>(n), grown = std::make_unique<std::atomic<char>[]>(n);
+  auto try_grow = [&](size_t k) {
+    if (claimed[k].exchange(1, std::memory_order_acq_rel)) return false;
+    const size_t j = strip_at(k);
+    grow_strip(j);
+    solve(j);
+    scan_strip(j);
+    grown[k].store(1, std::memory_order_release);
+    return true;
+  };
+  auto ensure_grown = [&](size_t k) {
+    if (try_grow(k)) return;
+    while (!grown[k].load(std::memory_order_acquire)) std::this_thread::yield();  // the helper is on it
+  };
+  auto finish = [&](size_t k) {
+    const size_t j = strip_at(k);
+    refracture(j);
+    plasticity(j);
+  };
+  if (wrap) ensure_grown(n - 1);  // the first strip propagates into the last
+  std::atomic<bool> stop{false};
+  tbb::task_group helper;
+  helper.run([&] {
+    for (size_t k = 0; k < n && !stop.load(std::memory_order_relaxed); ++k) try_grow(k);
+  });
   for (size_t k = 0; k < n; ++k) {
-    const size_t j = upward ? k : n - 1 - k;
+    ensure_grown(k);
+    if (k + 1 < n) ensure_grown(k + 1);
+    const size_t j = strip_at(k);
     break_strip(j);
     if (breaks_[j] > 0) assign_new_fracture_ids(j);
     propagate_from(j);
+    if (k >= 1 && !(wrap && k - 1 == 0)) finish(k - 1);
   }
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 8), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t j = r.begin(); j < r.end(); ++j) {
-      refracture(j);
-      plasticity(j);
-    }
-  });
+  stop.store(true, std::memory_order_relaxed);
+  helper.wait();
+  if (n > 0) finish(n - 1);
+  if (wrap) finish(0);  // the last strip propagated into the first
+  measure_fractures();
   for (size_t j = 0; j < n; ++j) {
     stats_.created += breaks_[j];
     stats_.scripted += scripted_[j];

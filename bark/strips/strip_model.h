@@ -2,15 +2,16 @@
 // Lefebvre & Neyret 2002: Figure 8 (per-step algorithm), sec. 3.2 (fracture creation,
 // propagation, opening), sec. 5 (attachment, mapped strips, dilatation), Figure 9 (refracture).
 //
-// Each step: the substrate grows (anchors follow it) and every strip is brought to equilibrium
-// (in parallel); then, as in the paper's Figure 8, a sweep over the strips breaks each strip
-// while an element exceeds its threshold and propagates its fractures into the neighbours
-// before they are visited, so a young sharp fracture can run along the axis within one step
-// (brittle fracture is fast next to growth) and relieve the strips it crosses. The sweep
-// alternates direction every step so that neither end is favoured. Wide fractures may then
-// harden into bark, and plasticity resets the attachment springs and the fracture rest
-// lengths. Random draws depend on (seed, strip, step) only: the result is bit-identical for
-// any thread count.
+// Each step, as in the paper's Figure 8, a sweep over the strips grows each strip (its anchors
+// follow the substrate), brings it to equilibrium, breaks it while an element exceeds its
+// threshold and propagates its fractures into the neighbours before they are visited, so a
+// young sharp fracture can run along the axis within one step (brittle fracture is fast next
+// to growth) and relieve the strips it crosses. The sweep alternates direction every step so
+// that neither end is favoured. Wide fractures may then harden into bark, and plasticity
+// resets the attachment springs and the fracture rest lengths. The sweep runs as a wavefront
+// (a strip is finished as soon as both neighbours have propagated into it) and a helper task
+// grows and solves strips ahead of it. Random draws depend on (seed, strip, step) only: the
+// result is bit-identical for any thread count.
 #pragma once
 
 #include <functional>
@@ -18,6 +19,7 @@
 
 #include "bark/strips/fracture_skeleton.h"
 #include "bark/strips/random.h"
+#include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip.h"
 #include "bark/strips/strip_domain.h"
 #include "bark/strips/strip_params.h"
@@ -131,8 +133,15 @@ class StripModel {
   int step_ = 0;
   bool check_ = false;
   std::vector<double> residual_;  // per strip, when check_
+  std::vector<EquilibriumFactor> factors_;   // per strip: reused while its stiffnesses are unchanged
   std::vector<char> over_;                   // per strip: an element exceeded its threshold after growth
-  std::vector<std::vector<int32_t>> tips_;   // per strip: fracture elements with a free end this step
+  // Per strip: fracture elements with a free end this step and their element index (kept
+  // current by break_element, the only place elements are inserted during the sweep).
+  struct FreeEnd {
+    int32_t fracture;
+    int32_t element;
+  };
+  std::vector<std::vector<FreeEnd>> tips_;
   std::vector<std::vector<std::pair<int32_t, double>>> widths_;  // per strip: (fracture root, width)
   bool sharp(int32_t id) const;
   void scan_strip(size_t j);
