@@ -206,17 +206,21 @@ void StripModel::grow_strip(size_t j) {
 void StripModel::scan_strip(size_t j) {
   // Which strips need the break loop, and the free ends propagation will look at.
   const Strip& s = strips_[j];
-  over_[j] = 0;
-  tips_[j].clear();
-  for (size_t i = 0; i < s.size(); ++i) {
+  const size_t n = s.size();
+  std::vector<FreeEnd>& tips = tips_[j];
+  tips.clear();
+  bool over = false;
+  for (size_t i = 0; i < n; ++i) {
     const Element& e = s.elements[i];
+    const double length = (i + 1 < n ? s.x[i + 1] : s.right(i)) - s.x[i];
     if (e.kind == ElementKind::Epidermis) {
-      over_[j] |= s.length(i) > e.rest * e.threshold;
+      over |= length > e.rest * e.threshold;
     } else {
       const FractureElement& fe = s.fractures[size_t(e.fracture)];
-      if (fe.active && (fe.up < 0 || fe.down < 0)) tips_[j].push_back({e.fracture, int32_t(i)});
+      if (fe.active && (fe.up < 0 || fe.down < 0)) tips.push_back({e.fracture, int32_t(i)});
     }
   }
+  over_[j] = over;
 }
 
 void StripModel::plasticity(size_t j) {
@@ -224,18 +228,24 @@ void StripModel::plasticity(size_t j) {
   // material fills the fractures, whose rest length becomes their current width.
   // Also lists each fracture element's (fracture, width) for the next step's Inglis ratios.
   Strip& s = strips_[j];
+  const size_t n = s.size();
   s.anchor = s.x;
-  widths_[j].clear();
-  for (size_t i = 0; i < s.size(); ++i) {
+  auto& widths = widths_[j];
+  widths.clear();
+  const bool constant_kf = params_.fracture_stiffness.size() == 1;
+  bool refactor = false;
+  for (size_t i = 0; i < n; ++i) {
     Element& e = s.elements[i];
-    if (e.kind == ElementKind::Fracture) {
-      e.rest = std::max(0.0, s.length(i));
+    if (e.kind != ElementKind::Fracture) continue;
+    e.rest = std::max(0.0, (i + 1 < n ? s.x[i + 1] : s.right(i)) - s.x[i]);
+    if (!constant_kf) {
       const double k = params_.fracture_stiffness_at(e.rest);
-      if (k != e.stiffness) factors_[j].valid = false;
+      refactor |= k != e.stiffness;
       e.stiffness = k;
-      widths_[j].emplace_back(skeleton_.find(s.fractures[size_t(e.fracture)].id), e.rest);
     }
+    widths.emplace_back(skeleton_.find(s.fractures[size_t(e.fracture)].id), e.rest);
   }
+  if (refactor) factors_[j].valid = false;
 }
 
 void StripModel::step() {
