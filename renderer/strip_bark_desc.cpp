@@ -93,6 +93,15 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint32
   bark::StripParams& p = d.params;
   p = *preset;
   p.seed = default_seed;
+  if (auto v = o.get("orientation")) {
+    const std::string s = v->string();
+    if (s == "vertical")
+      p.orientation = bark::FractureOrientation::Vertical;
+    else if (s == "horizontal")
+      p.orientation = bark::FractureOrientation::Horizontal;
+    else
+      o.fail("orientation", "unknown orientation \"" + s + "\"; allowed: vertical, horizontal");
+  }
   if (auto v = o.get("strip_width")) p.strip_width = v->positive();
   if (auto v = o.get("element_length")) p.element_length = v->positive();
   if (auto v = o.get("steps")) p.steps = v->integer();

@@ -52,9 +52,11 @@ double mean_circumference(const bark::StripModel& model) {
 // min_w × min_h and at most max × max.
 void automatic_size(const bark::StripModel& model, int texels_per_strip, int min_w, int min_h, int max, int* W, int* H) {
   const double texel = model.domain().strip_width / texels_per_strip;
-  const double C_final = mean_circumference(model) / model.scale_at_step(model.steps_done());
-  *W = std::clamp(int(std::lround(C_final / texel)), min_w, max);
-  *H = std::clamp(int(std::lround(model.domain().length / texel)), min_h, max);
+  // Final extent along the strips and across them; strips along the axis swap the two.
+  const double along = mean_circumference(model) / model.scale_at_step(model.steps_done()), across = model.domain().length;
+  const bool axial = model.domain().along_axis;
+  *W = std::clamp(int(std::lround((axial ? across : along) / texel)), min_w, max);
+  *H = std::clamp(int(std::lround((axial ? model.domain().axis_length : across) / texel)), min_h, max);
 }
 
 }  // namespace
@@ -68,7 +70,11 @@ bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
   // Texels a quarter of a strip wide: fracture edges stay sharp in close-ups.
   if (W <= 0 || H <= 0) automatic_size(model, 4, 64, 16, 8192, &W, &H);
   bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
-  const double C0 = mean_circumference(model) * model.scale_at_step(0) / model.scale_at_step(model.steps_done());
+  // Circumference of the epidermis when it formed: the texture's period around (UV0 × C0).
+  // Strips along the axis grow in length only, and their UV0 around is the angle.
+  const double C0 = model.domain().along_axis
+                        ? model.domain().length
+                        : mean_circumference(model) * model.scale_at_step(0) / model.scale_at_step(model.steps_done());
   bark::dress_colors(f, desc_->colors, desc_->depth.max_depth, C0);
   return f;
 }

@@ -59,9 +59,11 @@ void StripModel::break_strip(size_t j) {
   Strip& s = strips_[j];
   StreamRng rng(params_.seed, j, uint64_t(step_));
   // Scripted fractures (the paper's interactive picking) of this step on this strip.
-  for (const ScriptedFracture& sf : params_.scripted)
-    if (sf.step == step_ && size_t(std::clamp(int(sf.s / domain_.strip_width), 0, int(strips_.size()) - 1)) == j)
-      scripted_[j] += trigger(j, sf.theta) ? 1 : 0;
+  for (const ScriptedFracture& sf : params_.scripted) {
+    if (sf.step != step_) continue;
+    const auto [strip, theta] = strip_coords(sf.s, sf.theta);
+    if (strip == j) scripted_[j] += trigger(j, theta) ? 1 : 0;
+  }
   for (double theta : arrivals_[j]) arrived_[j] += trigger(j, theta) ? 1 : 0;
   arrivals_[j].clear();
   if (!over_[j] && scripted_[j] == 0 && arrived_[j] == 0) return;  // nothing exceeded its threshold after growth
@@ -95,7 +97,8 @@ void StripModel::break_strip(size_t j) {
       for (int c = 0; c < 4; ++c) {
         const double fc = 0.5 + 0.5 * spread * rng.symmetric();
         const double th = theta_of(j, s.x[at] + fc * s.length(at));
-        const double w = params_.weakness.sample(th / kTwoPi, domain_.strips[j].s / domain_.length);
+        const Eigen::Vector2d uv = surface_uv(j, th);
+        const double w = params_.weakness.sample(uv.x(), uv.y());
         if (w > best) {
           best = w;
           f = fc;

@@ -36,7 +36,10 @@ double DepthProfile::evaluate(double q) const {
   return q;
 }
 
-FractureField rasterize(const StripModel& model, int W, int H, const DepthProfile& profile) {
+namespace {
+
+// The field in the strips' own space: columns along the strips, rows across them.
+FractureField rasterize_strips(const StripModel& model, int W, int H, const DepthProfile& profile) {
   const auto& strips = model.strips();
   const auto& dom = model.domain();
   const size_t n = strips.size();
@@ -203,6 +206,42 @@ FractureField rasterize(const StripModel& model, int W, int H, const DepthProfil
       }
     }
   });
+  return f;
+}
+
+// Strips along the axis: the strips' space is the bark's transposed.
+FractureField transpose(const FractureField& t) {
+  FractureField f;
+  f.width = t.height;
+  f.height = t.width;
+  const size_t px = size_t(f.width) * f.height;
+  auto resize = [&](std::vector<float>& v, int channels) { v.assign(px * size_t(channels), 0.0f); };
+  resize(f.opening, 1), resize(f.depth, 1), resize(f.uv0, 2), resize(f.interior, 1);
+  resize(f.fracture_id, 1), resize(f.age, 1), resize(f.level, 1), resize(f.color, 3);
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const size_t p = f.index(x, y), q = t.index(y, x);
+      f.opening[p] = t.opening[q];
+      f.depth[p] = t.depth[q];
+      f.interior[p] = t.interior[q];
+      f.fracture_id[p] = t.fracture_id[q];
+      f.age[p] = t.age[q];
+      f.level[p] = t.level[q];
+      // Around: the angle; along: the material coordinate (plates carry their texture along
+      // the axis as they are pulled apart).
+      f.uv0[2 * p] = t.uv0[2 * q + 1];
+      f.uv0[2 * p + 1] = t.uv0[2 * q];
+    }
+  return f;
+}
+
+}  // namespace
+
+FractureField rasterize(const StripModel& model, int W, int H, const DepthProfile& profile) {
+  if (!model.domain().along_axis) return rasterize_strips(model, W, H, profile);
+  FractureField f = transpose(rasterize_strips(model, H, W, profile));
+  f.length = model.domain().axis_length;
+  f.circumference = model.domain().length;
   return f;
 }
 

@@ -1,6 +1,8 @@
 // FractureField: the strip model's result rasterized over the (s, θ) parameter space of one
 // cylinder (Lefebvre & Neyret 2002, sec. 5.4 "mappable dressing", texture case). Columns are
-// θ ∈ [0, 2π) (u = θ / 2π, periodic), rows are s ∈ [0, length] from the bottom (row 0) up.
+// θ ∈ [0, 2π) (u = θ / 2π, periodic), rows are s ∈ [0, length] from the bottom (row 0) up,
+// whichever way the strips run (strips along the axis are rasterized in their own space and
+// transposed).
 //
 // Fracture silhouettes are reconstructed from the skeleton (sec. 3.3): a fracture element and
 // the element it links to in the next strip bound a trapezoid; a tip without a link closes
@@ -30,7 +32,8 @@ struct FractureField {
   // Per pixel (row-major, row 0 at s = 0):
   std::vector<float> opening;      // fracture coverage in [0, 1]
   std::vector<float> depth;        // metres below the epidermis
-  std::vector<float> uv0;          // 2 per pixel: material coordinate on the original epidermis (u), s / length (v)
+  std::vector<float> uv0;          // 2 per pixel: material coordinate on the original epidermis (u), s / length (v);
+                                   // strips along the axis: θ / 2π (u), material coordinate along the axis (v)
   std::vector<float> interior;     // across the fracture, 0 where the newest material appears (Figure 13), 1 at the oldest
   std::vector<float> fracture_id;  // skeleton component (+1; 0 = epidermis)
   std::vector<float> age;          // growth steps since the fracture appeared (0 on epidermis)

@@ -15,7 +15,7 @@ StripParams base() {
 
 }  // namespace
 
-std::vector<std::string> strip_preset_names() { return {"furrowed", "fissured", "plated", "brittle"}; }
+std::vector<std::string> strip_preset_names() { return {"furrowed", "fissured", "plated", "brittle", "banded"}; }
 
 std::optional<StripParams> strip_preset(const std::string& name) {
   StripParams p = base();
@@ -56,6 +56,20 @@ std::optional<StripParams> strip_preset(const std::string& name) {
     p.inglis_threshold = 30;
     p.propagation_jitter_deg = 35;
     p.opening_mix = {0, 1, 0};
+  } else if (name == "banded") {
+    // Horizontal dashes (cherry, birch lenticels): strips along the axis (the paper's
+    // horizontal variant), slow axial stretch, strong attachment, and tips that only cut bark
+    // still under high tension keep the tears short; they open on their axis.
+    p.orientation = FractureOrientation::Horizontal;
+    p.growth_rate = 1.0004;  // slow axial stretch: ×1.22 over the simulation
+    p.element_length = 0.015;
+    p.attachment = 0.6;
+    p.fracture_stiffness = {{0.0, 0.1}};
+    p.threshold_noise = 0.4;
+    p.inglis_threshold = 40;
+    p.propagation_jitter_deg = 6;
+    p.propagation_tension = 0.85;
+    p.opening_mix = {1, 0, 0};
   } else {
     return std::nullopt;
   }

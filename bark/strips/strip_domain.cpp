@@ -59,6 +59,44 @@ StripDomain cylinder_domain(const GeneralizedCylinder& c, const StripParams& p, 
   return d;
 }
 
+StripDomain longitudinal_domain(const GeneralizedCylinder& c, const StripParams& p, int bins) {
+  // Mean circumference over the length, from 16 sections × 32 chords.
+  constexpr int kSections = 16, kChords = 32;
+  auto circumference = [&](double u) {
+    double sum = 0;
+    for (int i = 0; i < kChords; ++i)
+      sum += (c.position(u, kTwoPi * (i + 1) / kChords) - c.position(u, kTwoPi * i / kChords)).norm();
+    return sum;
+  };
+  double mean = 0;
+  for (int i = 0; i < kSections; ++i) mean += circumference((i + 0.5) / kSections) / kSections;
+  StripDomain d;
+  d.length = mean;
+  const int n = std::max(3, strip_count(mean, p.strip_width));
+  d.strip_width = mean / n;
+  d.cyclic = false;  // strips end at the base and the top of the limb
+  d.wrap_s = true;   // and close around it
+  d.along_axis = true;
+  d.axis_length = c.length();
+  d.strips.resize(size_t(n));
+  std::vector<double> local(static_cast<size_t>(bins));  // circumference at each bin's middle / mean
+  for (int k = 0; k < bins; ++k) local[size_t(k)] = circumference((k + 0.5) / bins) / mean;
+  for (int j = 0; j < n; ++j) {
+    StripMetric& m = d.strips[size_t(j)];
+    m.s = (j + 0.5) * d.strip_width;
+    const double theta = kTwoPi * (j + 0.5) / n;
+    m.bin_length.resize(size_t(bins));
+    m.width = local;
+    for (int k = 0; k < bins; ++k)
+      m.bin_length[size_t(k)] = (c.position(double(k + 1) / bins, theta) - c.position(double(k) / bins, theta)).norm();
+    if (!p.dilatation.empty()) {
+      m.exponent.resize(size_t(bins));
+      for (int k = 0; k < bins; ++k) m.exponent[size_t(k)] = 1.0 + dilatation(p, (k + 0.5) / bins * d.axis_length, theta);
+    }
+  }
+  return d;
+}
+
 StripDomain flat_domain(double width, double height, const StripParams& p, int bins) {
   StripDomain d;
   d.length = height;

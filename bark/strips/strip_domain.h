@@ -24,12 +24,20 @@ struct StripDomain {
   double strip_width = 0;  // nominal w (m)
   bool cyclic = true;      // strips close around (trees, tileable samples)
   bool wrap_s = false;     // propagation wraps from the last strip to the first (tileable)
+  // Strips run along a cylinder's axis (horizontal fractures): strip j lies at angle
+  // θ = 2π (j + ½) / n, position along a strip is s, and `length` is the mean circumference.
+  bool along_axis = false;
+  double axis_length = 0;  // along_axis: the cylinder's length (m)
   std::vector<StripMetric> strips;
   int bins() const { return strips.empty() ? 0 : int(strips[0].bin_length.size()); }
 };
 
 // Strips over a generalized cylinder: strip_width from the params, M angular bins.
 StripDomain cylinder_domain(const GeneralizedCylinder& cylinder, const StripParams& p, int bins = 64);
+// Strips along the axis of a generalized cylinder (FractureOrientation::Horizontal): about
+// one per strip_width of mean circumference, M bins along s each; a strip's width follows the
+// local circumference, so fracture density stays constant where the limb thins.
+StripDomain longitudinal_domain(const GeneralizedCylinder& cylinder, const StripParams& p, int bins = 64);
 // A flat sample `width` × `height` metres (θ maps to x = θ/2π · width).
 StripDomain flat_domain(double width, double height, const StripParams& p, int bins = 64);
 

@@ -77,9 +77,25 @@ double StripModel::epidermis_stiffness(size_t j, double theta, double rest, uint
 double StripModel::jittered_threshold(size_t j, double theta, StreamRng& rng) const {
   // sec. 3.2.3: jittered threshold; the weakness map lowers it where the user painted.
   double excess = (params_.S() - 1.0) * (1.0 + params_.threshold_noise * rng.symmetric());
-  if (!params_.weakness.empty())
-    excess *= 1.0 - params_.weakness_strength * params_.weakness.sample(theta / kTwoPi, domain_.strips[j].s / domain_.length);
+  if (!params_.weakness.empty()) {
+    const Eigen::Vector2d uv = surface_uv(j, theta);
+    excess *= 1.0 - params_.weakness_strength * params_.weakness.sample(uv.x(), uv.y());
+  }
   return 1.0 + excess;
+}
+
+std::pair<size_t, double> StripModel::strip_coords(double s, double theta) const {
+  const long n = long(strips_.size());
+  if (domain_.along_axis) {
+    const double u = theta / kTwoPi - std::floor(theta / kTwoPi);
+    return {size_t(std::clamp(long(u * double(n)), 0L, n - 1)), kTwoPi * s / domain_.axis_length};
+  }
+  return {size_t(std::clamp(long(std::floor(s / domain_.strip_width)), 0L, n - 1)), theta};
+}
+
+Eigen::Vector2d StripModel::surface_uv(size_t j, double theta) const {
+  const double along = theta / kTwoPi, across = domain_.strips[j].s / domain_.length;
+  return domain_.along_axis ? Eigen::Vector2d(across, along) : Eigen::Vector2d(along, across);
 }
 
 double StripModel::x_of(size_t j, double theta) const {

@@ -77,6 +77,12 @@ class StripModel {
   // Index of the element of strip j that contains arc position x (cyclic strips wrap x).
   size_t element_at(size_t j, double x) const;
 
+  // The strip and strip angle of a point (s metres along the axis, θ around it) of the bark's
+  // parameter space, and the bark's (u = θ / 2π, v = s / length) of a strip point: the two
+  // differ when the strips run along the axis.
+  std::pair<size_t, double> strip_coords(double s, double theta) const;
+  Eigen::Vector2d surface_uv(size_t strip, double theta) const;
+
   // Starts a fracture at (strip, θ) in the current state, linked to nothing; returns false if
   // the location is already fractured. Used for scripted fractures, and meant for a tree to
   // continue fractures arriving from another cylinder (sec. 5.3, branchings). `fe_out`

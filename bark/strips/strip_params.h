@@ -35,9 +35,16 @@ struct ScriptedFracture {
   int step = 0;
 };
 
+// Which way the fractures run on a cylinder. Vertical (the paper's model): strips around
+// the trunk, circumferential growth tears them along the axis. Horizontal (the discussion's
+// variant, sec. 7): strips along the axis, axial growth tears them around the trunk, as in
+// cherry or birch bark.
+enum class FractureOrientation : uint8_t { Vertical, Horizontal };
+
 struct StripParams {
+  FractureOrientation orientation = FractureOrientation::Vertical;
   // Discretization.
-  double strip_width = 0.01;     // w (m): strip spacing along the growth axis
+  double strip_width = 0.01;     // w (m): strip spacing across the strips
   double element_length = 0.01;  // initial epidermis element length (m)
   int steps = 200;               // growth steps
   // Growth (sec. 3.2.3, 5.2): relative circumference growth per step, G > 1. The tree shape

@@ -3,7 +3,8 @@
 // sharp fracture tips of the parent near the line where the child emerges continue into the
 // child's strips at the same 3D point, and the child's tips near its base continue into the
 // parent: the curvilinear parameterization covers propagation along one cylinder, the 3D
-// proximity test covers the junction.
+// proximity test covers the junction. Horizontal fractures (strips along the axis) run around
+// each limb and are not continued across junctions.
 #pragma once
 
 #include <functional>
