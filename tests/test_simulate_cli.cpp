@@ -109,7 +109,9 @@ TEST(SimulateCli, BadBarkSettingsNameTheirPath) {
     std::string bark, expect;
   };
   const std::vector<Case> cases = {
-      {R"({"model": "strips", "preset": "birch"})", "/objects/0/bark/preset: unknown preset \"birch\"; allowed: furrowed, fissured, plated, brittle"},
+      {R"({"model": "strips", "preset": "birch"})", "/objects/0/bark/preset: unknown preset \"birch\"; allowed: furrowed, fissured, plated, brittle, banded"},
+      {R"({"model": "strips", "orientation": "diagonal"})",
+       "/objects/0/bark/orientation: unknown orientation \"diagonal\"; allowed: vertical, horizontal"},
       {R"({"model": "waves"})", "/objects/0/bark/model: unknown bark model"},
       {R"({"model": "strips", "attachmnt": 1})", "/objects/0/bark/attachmnt: unknown key"},
       {R"({"model": "strips", "threshold_noise": 1.5})", "/objects/0/bark/threshold_noise: threshold_noise: must be in [0, 1)"},
