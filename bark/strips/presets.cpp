@@ -38,14 +38,14 @@ std::optional<StripParams> strip_preset(const std::string& name) {
     p.propagation_jitter_deg = 5;
     p.opening_mix = {0, 0, 1};
   } else if (name == "plated") {
-    // Broad plates between wide fissures (pine): weak attachment (long plates), short tips,
-    // wide fractures harden and crack again (Figure 9).
+    // Broad plates between wide, deep fissures (pine): weak attachment (long plates), tips
+    // that cut readily and wander, fissures wider than 5 cm harden and crack again (Figure 9).
     p.attachment = 0.05;
     p.fracture_stiffness = {{0.0, 0.05}};
-    p.inglis_threshold = 25;
-    p.propagation_tension = 0.6;
-    p.propagation_jitter_deg = 20;
-    p.refracture_width = 0.02;
+    p.inglis_threshold = 15;
+    p.propagation_tension = 0.3;
+    p.propagation_jitter_deg = 25;
+    p.refracture_width = 0.05;
     p.opening_mix = {0.5, 0.5, 0};
   } else if (name == "brittle") {
     // Short, angular brittle tears (Figure 17): low threshold noise, strong jitter, tips that
