@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Strip-model simulation and dressing time (README figures): the 1000-strip × 500-step trunk
-# of bench/scenes/strips_trunk_1000x500.json (radius 0.15 m, 5 mm strips), then the scaling
-# table over 250/500/1000/2000 strips. Medians of REPEAT runs (default 3).
+# of bench/scenes/strips_trunk_1000x500.json (radius 0.15 m, 5 mm strips), the whole small
+# tree of scenes/strips_tree.json, then the scaling table over 250/500/1000/2000 strips.
+# Medians of REPEAT runs (default 3).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 REPEAT=${REPEAT:-3}
@@ -23,6 +24,8 @@ read -r sim dress strips fr <<<"$(run bench/scenes/strips_trunk_1000x500.json 40
 echo "  simulate ${sim} s, dress ${dress} s (${strips} strips, ${fr} fractures)"
 ./build/phellem simulate bench/scenes/strips_trunk_1000x500.json -o "$out/mesh" --quiet --stats "$out/m.json"
 python3 -c "import json;d=json.load(open('$out/m.json'));print('  bark mesh (.glb, once): %.1f s, %d triangles' % (d['time_s']['mesh'], d['mesh_triangles']))"
+read -r sim dress strips fr <<<"$(run scenes/strips_tree.json 1024x1024)"
+echo "whole small tree (scenes/strips_tree.json, trunk + 3 branches): simulate ${sim} s, dress ${dress} s at 1024x1024 per cylinder (${strips} strips, ${fr} fractures)"
 echo
 echo "strips  steps  fractures  simulate_s  us_per_strip_step"
 for n in 250 500 1000 2000; do
