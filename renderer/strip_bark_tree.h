@@ -31,8 +31,12 @@ class TreeStripSimulation {
   int steps_done() const { return sim_->model(0).steps_done(); }
   int steps_total() const { return sim_->model(0).steps_total(); }
   // Girth of the current step relative to the final shape (≤ 1): frames of a growth time-lapse
-  // draw the tree at this scale.
-  double girth_scale() const { return sim_->model(0).scale_at_step(steps_done()); }
+  // draw the tree at this scale. Horizontal fractures come from axial growth: the limbs keep
+  // their girth (and, in growth frames, their final length: the stretch shows in the bark only).
+  double girth_scale() const {
+    const bark::StripModel& m = sim_->model(0);
+    return m.domain().along_axis ? 1.0 : m.scale_at_step(steps_done());
+  }
 
   size_t parts() const { return parts_.size(); }
   // "trunk", "branch1", ...
