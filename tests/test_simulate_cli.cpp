@@ -146,15 +146,22 @@ double coverage(const std::string& exr) {
   return sum;
 }
 
-TEST(GrowthCli, FramesFollowTheSimulationAndTheTrunkThickens) {
-  const std::string dir = test::temp_dir("growth_ok");
+// Writes a small trunk scene with strip bark `preset` into `dir` and renders 3 growth frames
+// f_00..f_02.exr; returns the scene path.
+std::string grow_three_frames(const std::string& dir, const std::string& preset) {
   const std::string scene = dir + "/scene.json";
   test::write_text(scene, R"({"camera": {"position": [0, 0.15, 0.6], "look_at": [0, 0.15, 0], "fov_deg": 30},
     "lights": [{"type": "environment", "color": [1, 1, 1]}],
     "objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 0.3, 0]], "radius": [0.05],
-                 "bark": {"model": "strips", "preset": "fissured", "steps": 60, "growth_rate": 1.01, "strip_width": 0.01}}]})");
+                 "bark": {"model": "strips", "preset": ")" + preset + R"(", "steps": 60, "growth_rate": 1.01, "strip_width": 0.01}}]})");
   const auto r = test::run_phellem("growth " + scene + " --frames 3 -o " + dir + "/f_%02d.exr --res 48x48 --spp 1 --quiet");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return scene;
+}
+
+TEST(GrowthCli, FramesFollowTheSimulationAndTheTrunkThickens) {
+  const std::string dir = test::temp_dir("growth_ok");
+  const std::string scene = grow_three_frames(dir, "fissured");
   const double c0 = coverage(dir + "/f_00.exr"), c2 = coverage(dir + "/f_02.exr");
   ASSERT_GT(c0, 0);
   // Girth at frame k is G^-(T - t_k) of the final one: 1.01^-40 = 0.67 for the first frame.
@@ -174,13 +181,7 @@ TEST(GrowthCli, FramesFollowTheSimulationAndTheTrunkThickens) {
 TEST(GrowthCli, HorizontalFracturesKeepTheGirth) {
   // Strips along the axis grow in length: the frames keep the final girth.
   const std::string dir = test::temp_dir("growth_horizontal");
-  const std::string scene = dir + "/scene.json";
-  test::write_text(scene, R"({"camera": {"position": [0, 0.15, 0.6], "look_at": [0, 0.15, 0], "fov_deg": 30},
-    "lights": [{"type": "environment", "color": [1, 1, 1]}],
-    "objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 0.3, 0]], "radius": [0.05],
-                 "bark": {"model": "strips", "preset": "banded", "steps": 60, "growth_rate": 1.01, "strip_width": 0.01}}]})");
-  const auto r = test::run_phellem("growth " + scene + " --frames 3 -o " + dir + "/f_%02d.exr --res 48x48 --spp 1 --quiet");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  grow_three_frames(dir, "banded");
   const double c0 = coverage(dir + "/f_00.exr"), c2 = coverage(dir + "/f_02.exr");
   ASSERT_GT(c2, 0);
   // Same silhouette up to the displaced cracks on it (vertical fractures: 1.01^-40 = 0.67).
