@@ -1,6 +1,9 @@
 // Google Benchmark micro-benchmarks of the hot building blocks.
 #include <benchmark/benchmark.h>
 
+#include <vector>
+
+#include "bark/strips/strip_equilibrium.h"
 #include "renderer/bsdf.h"
 #include "renderer/displacement.h"
 #include "renderer/sampler.h"
@@ -62,5 +65,58 @@ static void BM_DiceDisplacedTrunk(benchmark::State& state) {
   state.counters["tri/s"] = benchmark::Counter(double(tris), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_DiceDisplacedTrunk)->Arg(4)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// A cyclic strip like those of the benchmark trunk at the end of its growth: 178 elements,
+// a third of them fractures, attached to the substrate.
+static bark::Strip benchmark_strip() {
+  bark::Strip s;
+  s.cyclic = true;
+  s.circumference = 0.94;
+  const int n = 178;
+  for (int i = 0; i < n; ++i) {
+    bark::Element e;
+    e.kind = i % 3 == 1 ? bark::ElementKind::Fracture : bark::ElementKind::Epidermis;
+    e.rest = 0.005;
+    e.stiffness = e.kind == bark::ElementKind::Fracture ? 0.3 : 2.0;
+    s.elements.push_back(e);
+    s.x.push_back(i * s.circumference / n);
+  }
+  s.anchor = s.x;
+  s.attach.assign(size_t(n), 0.1);
+  return s;
+}
+
+// Equilibrium of one strip per iteration (items = elements). Arg 0: eliminate every time;
+// arg 1: reuse the factor (the model's case between breaks). The anchors move a little each
+// time, as growth moves them.
+static void BM_StripSolve(benchmark::State& state) {
+  bark::Strip s = benchmark_strip();
+  bark::EquilibriumFactor f;
+  size_t k = 0;
+  for (auto _ : state) {
+    s.anchor[k++ % s.anchor.size()] += 1e-9;
+    bark::solve_equilibrium(s, state.range(0) ? &f : nullptr);
+    benchmark::DoNotOptimize(s.x.data());
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(s.size()));
+}
+BENCHMARK(BM_StripSolve)->Arg(0)->Arg(1);
+
+// The same over 1000 strips in turn (16 MB, as one step of the benchmark trunk touches): the
+// cost once the strips no longer fit in the caches.
+static void BM_StripSolveThousandStrips(benchmark::State& state) {
+  std::vector<bark::Strip> strips(1000, benchmark_strip());
+  std::vector<bark::EquilibriumFactor> f(strips.size());
+  size_t k = 0;
+  for (auto _ : state) {
+    bark::Strip& s = strips[k % strips.size()];
+    for (double& a : s.anchor) a *= 1.0000001;
+    bark::solve_equilibrium(s, &f[k % strips.size()]);
+    benchmark::DoNotOptimize(s.x.data());
+    ++k;
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * 178);
+}
+BENCHMARK(BM_StripSolveThousandStrips);
 
 BENCHMARK_MAIN();
