@@ -95,78 +95,115 @@ double element_tension(const Strip& s, size_t i) {
   return e.stiffness * (s.length(i) - e.rest);
 }
 
-void solve_equilibrium(Strip& s, EquilibriumFactor* factor) {
+namespace {
+
+// Tension at the anchors, T^a_i = K_i (a_{i+1} - a_i - l0_i) (element n-1 of a cyclic strip
+// closes by C).
+double anchor_tension(const Strip& s, size_t i) {
+  const double next = i + 1 < s.anchor.size() ? s.anchor[i + 1] : s.anchor[0] + s.circumference;
+  return s.elements[i].stiffness * (next - s.anchor[i] - s.elements[i].rest);
+}
+
+// Whether the strip takes the general path (an eliminated cyclic or open system) rather than a
+// special case (no attachment, fewer than 3 elements), which is then solved here.
+bool solve_special_case(Strip& s) {
   const size_t n = s.size();
-  if (n == 0) return;
+  if (n == 0) return true;
   bool attached = false;
   for (double a : s.attach) attached |= a > 0;
   if (!attached) {
     solve_uniform_tension(s);
-    return;
+    return true;
   }
-  // Unknowns: displacements u_j = x_j - a_j of the free nodes (better conditioned than x).
-  // Tension at the anchors, T^a_i = K_i (a_{i+1} - a_i - l0_i), gives the right-hand side
-  // T^a_i - T^a_{i-1}.
-  auto K = [&](size_t i) { return s.elements[i].stiffness; };
-  auto Ta = [&](size_t i) {  // element n-1 of a cyclic strip closes by C
-    const double next = i + 1 < s.anchor.size() ? s.anchor[i + 1] : s.anchor[0] + s.circumference;
-    return K(i) * (next - s.anchor[i] - s.elements[i].rest);
-  };
   if (s.cyclic && n <= 2) {
     // Node 0 and node 1 are each other's left and right neighbour: assemble 2×2 (or 1×1).
     if (n == 1) {
       s.x[0] = s.anchor[0];  // the single element closes on itself: tension is fixed by C
-      return;
+      return true;
     }
-    const double k0 = K(0), k1 = K(1), a0 = s.attach[0], a1 = s.attach[1];
+    const double k0 = s.elements[0].stiffness, k1 = s.elements[1].stiffness, a0 = s.attach[0], a1 = s.attach[1];
     const double m00 = k0 + k1 + a0, m11 = k0 + k1 + a1, m01 = -(k0 + k1);
-    const double t0 = Ta(0), t1 = Ta(1);
+    const double t0 = anchor_tension(s, 0), t1 = anchor_tension(s, 1);
     const double r0 = t0 - t1, r1 = t1 - t0;
     const double det = m00 * m11 - m01 * m01;
     s.x[0] = s.anchor[0] + (r0 * m11 - m01 * r1) / det;
     s.x[1] = s.anchor[1] + (m00 * r1 - m01 * r0) / det;
-    return;
+    return true;
   }
-  if (!s.cyclic && n < 2) return;  // both nodes fixed
-  thread_local EquilibriumFactor scratch_factor;
-  thread_local std::vector<double> rhs;
-  EquilibriumFactor& f = factor ? *factor : scratch_factor;
-  if (!factor || !f.valid) {
-    if (s.cyclic)
-      factor_cyclic(s, f);
-    else
-      factor_open(s, f);
-    f.valid = factor != nullptr;
-  }
-  const std::vector<double>& inv = f.inv;
-  const std::vector<double>& cp = f.cprime;
+  return !s.cyclic && n < 2;  // an open strip of one element: both nodes fixed
+}
+
+void ensure_factor(const Strip& s, EquilibriumFactor& f, bool keep) {
+  if (keep && f.valid) return;
+  if (s.cyclic)
+    factor_cyclic(s, f);
+  else
+    factor_open(s, f);
+  f.valid = keep;
+}
+
+// The right-hand side in displacements u_j = x_j - a_j (better conditioned than x): the
+// differences of the anchor tensions at each free node, the fixed ends of an open strip
+// entering through their known displacements. Returns the number of unknowns.
+size_t assemble(const Strip& s, std::vector<double>& rhs) {
+  const size_t n = s.size();
   if (s.cyclic) {
     rhs.resize(n);
-    double prev = Ta(n - 1);
+    double prev = anchor_tension(s, n - 1);
     for (size_t j = 0; j < n; ++j) {
-      const double t = Ta(j);
+      const double t = anchor_tension(s, j);
       rhs[j] = t - prev;
       prev = t;
     }
-    rhs[0] *= inv[0];
-    for (size_t i = 1; i < n; ++i) rhs[i] = (rhs[i] + K(i - 1) * rhs[i - 1]) * inv[i];
-    for (size_t i = n - 1; i-- > 0;) rhs[i] -= cp[i] * rhs[i + 1];
-    const double beta = -K(n - 1), gamma = -(K(n - 1) + K(0) + s.attach[0]);
+    return n;
+  }
+  const size_t m = n - 1;
+  rhs.resize(m);
+  for (size_t r = 0; r < m; ++r) rhs[r] = anchor_tension(s, r + 1) - anchor_tension(s, r);
+  rhs[0] += s.elements[0].stiffness * (s.x[0] - s.anchor[0]);
+  rhs[m - 1] += s.elements[n - 1].stiffness * (s.x[n] - s.anchor[n]);
+  return m;
+}
+
+// Sub-diagonal entry -K of row r (the element left of the row's node).
+double left_stiffness(const Strip& s, size_t r) { return s.elements[s.cyclic ? r - 1 : r].stiffness; }
+
+// Forward elimination and back substitution on the eliminated matrix. The running value is
+// carried in a register: the chains are bound by latency, not by memory.
+void substitute(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs, size_t m) {
+  double* r = rhs.data();
+  const double* inv = f.inv.data();
+  const double* cp = f.cprime.data();
+  double p = r[0] * inv[0];
+  r[0] = p;
+  for (size_t i = 1; i < m; ++i) r[i] = p = (r[i] + left_stiffness(s, i) * p) * inv[i];
+  for (size_t i = m - 1; i-- > 0;) r[i] = p = r[i] - cp[i] * p;
+}
+
+// Node positions from the solution (cyclic strips: the Sherman–Morrison correction).
+void write_positions(Strip& s, const EquilibriumFactor& f, const std::vector<double>& rhs) {
+  const size_t n = s.size();
+  if (s.cyclic) {
+    const double beta = -s.elements[n - 1].stiffness;
+    const double gamma = -(s.elements[n - 1].stiffness + s.elements[0].stiffness + s.attach[0]);
     const double fact = (rhs[0] + beta * rhs[n - 1] / gamma) / f.denominator;
     for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (rhs[j] - fact * f.u[j]);
     return;
   }
-  // Open strip: nodes 0 and n are fixed; unknowns are nodes 1..n-1. The fixed ends enter
-  // through their known displacements u_0 = x_0 - a_0 and u_n = x_n - a_n.
-  const size_t m = n - 1;
-  rhs.resize(m);
-  for (size_t r = 0; r < m; ++r) rhs[r] = Ta(r + 1) - Ta(r);
-  rhs[0] += K(0) * (s.x[0] - s.anchor[0]);
-  rhs[m - 1] += K(n - 1) * (s.x[n] - s.anchor[n]);
-  rhs[0] *= inv[0];
-  for (size_t r = 1; r < m; ++r) rhs[r] = (rhs[r] + K(r) * rhs[r - 1]) * inv[r];
-  for (size_t r = m - 1; r-- > 0;) rhs[r] -= cp[r] * rhs[r + 1];
-  for (size_t r = 0; r < m; ++r) s.x[r + 1] = s.anchor[r + 1] + rhs[r];
+  for (size_t r = 0; r + 1 < n; ++r) s.x[r + 1] = s.anchor[r + 1] + rhs[r];
+}
+
+}  // namespace
+
+void solve_equilibrium(Strip& s, EquilibriumFactor* factor) {
+  if (solve_special_case(s)) return;
+  thread_local EquilibriumFactor scratch_factor;
+  thread_local std::vector<double> rhs;
+  EquilibriumFactor& f = factor ? *factor : scratch_factor;
+  ensure_factor(s, f, factor != nullptr);
+  const size_t m = assemble(s, rhs);
+  substitute(s, f, rhs, m);
+  write_positions(s, f, rhs);
 }
 
 double equilibrium_residual(const Strip& s) {
