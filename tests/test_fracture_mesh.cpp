@@ -13,6 +13,7 @@
 
 #include "bark/dressing/fracture_mesh.h"
 #include "bark/strips/strip_model.h"
+#include "strip_helpers.h"
 
 using namespace phellem::bark;
 
@@ -45,14 +46,7 @@ FractureField ellipses(int W, int H) {
 }
 
 FractureField simulated(int W, int H) {
-  StripParams p;
-  p.steps = 150;
-  p.growth_rate = 1.005;
-  p.strip_width = 0.01;
-  p.element_length = 0.01;
-  p.attachment = 0.2;
-  p.inglis_threshold = 10;
-  p.fracture_stiffness = {{0.0, 0.1}};
+  const StripParams p = phellem::test::quick_strip_params(150, 1.005);
   StripModel m(flat_domain(0.4, 0.4, p), p);
   for (int i = 0; i < p.steps; ++i) m.step();
   DepthProfile d;

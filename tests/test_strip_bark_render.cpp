@@ -8,23 +8,14 @@
 #include "bark/dressing/bark_surface.h"
 #include "bark/strips/tree_bark.h"
 #include "render_helpers.h"
+#include "strip_helpers.h"
 
 using namespace phellem;
 using namespace phellem::bark;
 
 namespace {
 
-StripParams junction_params() {
-  StripParams p;
-  p.steps = 200;
-  p.growth_rate = 1.006;
-  p.strip_width = 0.01;
-  p.element_length = 0.01;
-  p.attachment = 0.2;
-  p.inglis_threshold = 10;
-  p.fracture_stiffness = {{0.0, 0.1}};
-  return p;
-}
+StripParams junction_params() { return test::quick_strip_params(200, 1.006); }
 
 // A vertical trunk and one branch leaving it at half height, 50° from the axis.
 std::vector<TreeCylinder> trunk_and_branch() {

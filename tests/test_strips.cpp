@@ -11,6 +11,7 @@
 #include "bark/strips/presets.h"
 #include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip_model.h"
+#include "strip_helpers.h"
 
 using namespace phellem::bark;
 
@@ -35,17 +36,7 @@ Strip make_strip(bool cyclic, const std::vector<double>& rest, const std::vector
 }
 
 // Small flat sample with quick settings.
-StripParams small_params() {
-  StripParams p;
-  p.steps = 120;
-  p.growth_rate = 1.004;
-  p.strip_width = 0.01;
-  p.element_length = 0.01;
-  p.attachment = 0.2;
-  p.inglis_threshold = 10;
-  p.fracture_stiffness = {{0.0, 0.1}};
-  return p;
-}
+StripParams small_params() { return phellem::test::quick_strip_params(120, 1.004); }
 
 StripModel run(const StripParams& p, double w = 0.3, double h = 0.3, bool check = false) {
   StripModel m(flat_domain(w, h, p), p);

@@ -91,14 +91,15 @@ void StripModel::propagate_from(size_t j) {
   // x (links join nearby elements), then over the whole strip.
   const Strip& here = strips_[j];
   auto element_of = [&](int32_t fe, double x) -> long {
+    auto is = [&](long i) { return here.elements[size_t(i)].kind == ElementKind::Fracture && here.elements[size_t(i)].fracture == fe; };
     const long ne = long(here.size()), at = long(element_at(j, x));
     for (long k = 0; k < std::min(ne, 33L); ++k) {
       long i = at + (k % 2 ? (k + 1) / 2 : -k / 2);
       i = i < 0 ? i + ne : i >= ne ? i - ne : i;
-      if (here.elements[size_t(i)].kind == ElementKind::Fracture && here.elements[size_t(i)].fracture == fe) return i;
+      if (is(i)) return i;
     }
     for (long i = 0; i < ne; ++i)
-      if (here.elements[size_t(i)].kind == ElementKind::Fracture && here.elements[size_t(i)].fracture == fe) return i;
+      if (is(i)) return i;
     return -1;
   };
   for (const Tip& tip : tips) {

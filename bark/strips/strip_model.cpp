@@ -228,7 +228,7 @@ void StripModel::scan_strip(size_t j) {
   bool over = false;
   for (size_t i = 0; i < n; ++i) {
     const Element& e = s.elements[i];
-    const double length = (i + 1 < n ? s.x[i + 1] : s.right(i)) - s.x[i];
+    const double length = s.length(i);
     if (e.kind == ElementKind::Epidermis) {
       over |= length > e.rest * e.threshold;
     } else {
@@ -253,7 +253,7 @@ void StripModel::plasticity(size_t j) {
   for (size_t i = 0; i < n; ++i) {
     Element& e = s.elements[i];
     if (e.kind != ElementKind::Fracture) continue;
-    e.rest = std::max(0.0, (i + 1 < n ? s.x[i + 1] : s.right(i)) - s.x[i]);
+    e.rest = std::max(0.0, s.length(i));
     if (!constant_kf) {
       const double k = params_.fracture_stiffness_at(e.rest);
       refactor |= k != e.stiffness;

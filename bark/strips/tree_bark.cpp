@@ -32,10 +32,7 @@ double surface_coords(const GeneralizedCylinder& c, const Eigen::Vector3d& p, do
   return std::copysign(std::hypot(radial, axial), radial);
 }
 
-size_t strip_at(const StripModel& m, double s) {
-  const double w = m.domain().strip_width;
-  return size_t(std::clamp(long(std::floor(s / w)), 0L, long(m.strips().size()) - 1));
-}
+size_t strip_at(const StripModel& m, double s) { return m.strip_coords(s, 0.0).first; }
 
 }  // namespace
 
