@@ -36,6 +36,7 @@ void TreeStripSimulation::run_to(int step, bool progress) {
     sim_->step();
     bar.advance();
   }
+  sim_->settle();  // a growth frame reads this intermediate state
   bar.finish();
 }
 

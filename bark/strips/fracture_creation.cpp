@@ -32,6 +32,7 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   // Material coordinate (UV0) runs over the original epidermis, E0 long.
   right.material = e.material + (e.level == 0 ? f * e.rest / epidermis0_[j] : 0.0);
   frac.kind = ElementKind::Fracture;
+  frac.free_ends = kFreeUp | kFreeDown;
   frac.level = e.level;
   frac.rest = 0;
   frac.stiffness = params_.fracture_stiffness_at(0);
@@ -134,22 +135,24 @@ void StripModel::assign_new_fracture_ids(size_t j) {
       fracture_width_.push_back(0);
     }
   for (size_t i = 0; i < s.size(); ++i) {
-    const Element& e = s.elements[i];
+    Element& e = s.elements[i];
     if (e.kind != ElementKind::Fracture) continue;
     const FractureElement& fe = s.fractures[size_t(e.fracture)];
+    e.id = fe.id;
     if (fe.birth == step_ && fracture_count_[size_t(fe.id)] == 0) {  // created by this step's breaks
       fracture_count_[size_t(fe.id)] = 1;
       fracture_width_[size_t(fe.id)] = s.length(i);
+      born_[j].emplace_back(fe.id, s.length(i));
     }
   }
 }
 
-void StripModel::refracture(size_t j) {
+void StripModel::refracture(size_t j, int step) {
   // Figure 9 / 2001 sec. 4.1: wide old fracture surface hardens into softer bark of the next
   // level, where new fractures then appear.
   if (params_.refracture_width <= 0) return;
   Strip& s = strips_[j];
-  StreamRng rng(params_.seed ^ 0x72656672ULL, j, uint64_t(step_));
+  StreamRng rng(params_.seed ^ 0x72656672ULL, j, uint64_t(step));
   bool changed = false;
   for (size_t i = 0; i < s.size(); ++i) {
     Element& e = s.elements[i];

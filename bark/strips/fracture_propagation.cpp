@@ -27,16 +27,24 @@ double StripModel::centre_theta(size_t j, size_t i) const {
 void StripModel::measure_fractures() {
   // Each fracture's element count and summed width: its length is count × strip width, its
   // mean width the Inglis ratio's denominator (sec. 3.2.4: "we used the mean fracture width").
-  // Measured at the end of a step (plasticity listed (root, width) per strip; sums go in strip
-  // order) and kept up to date through the next step's sweep as fractures are created,
-  // extended and merged; widening by the next step's growth shows in the step after.
+  // Measured at the end of a step, in strip order, from the widths plasticity listed when the
+  // step grew each strip (the previous step's widths) and those of the elements born during
+  // the step; kept up to date through the next step's sweep as fractures are created,
+  // extended and merged. Counts are exact; widths lag by a step (0.1 % of growth).
   fracture_count_.assign(skeleton_.ids(), 0.0);
   fracture_width_.assign(skeleton_.ids(), 0.0);
-  for (const auto& part : widths_)
-    for (const auto& [r, w] : part) {
-      fracture_count_[size_t(r)] += 1;
-      fracture_width_[size_t(r)] += w;
+  auto add = [&](const std::vector<std::pair<int32_t, double>>& list) {
+    for (const auto& [id, w] : list) {
+      const size_t r = size_t(skeleton_.find(id));
+      fracture_count_[r] += 1;
+      fracture_width_[r] += w;
     }
+  };
+  for (size_t j = 0; j < widths_.size(); ++j) {
+    add(widths_[j]);
+    add(born_[j]);
+    born_[j].clear();
+  }
 }
 
 bool StripModel::sharp(int32_t id) const {
@@ -55,6 +63,8 @@ std::vector<FractureTip> StripModel::sharp_tips(size_t first, size_t last) const
       if (s.elements[i].kind != ElementKind::Fracture) continue;
       const FractureElement& fe = s.fractures[size_t(s.elements[i].fracture)];
       if (!fe.active || fe.id < 0 || !sharp(fe.id)) continue;
+      // Unsettled: an element about to harden (settle()) is no longer a fracture.
+      if (pending_[j] && params_.refracture_width > 0 && s.length(i) > params_.refracture_width) continue;
       const int32_t root = skeleton_.find(fe.id);
       if (fe.up < 0) out.push_back({j, centre_theta(j, i), root, true});
       if (fe.down < 0) out.push_back({j, centre_theta(j, i), root, false});
@@ -159,6 +169,7 @@ void StripModel::propagate_from(size_t j) {
       const size_t i = element_at(ts, x);
       const Element& e = st.elements[i];
       int32_t g = -1;
+      size_t i_target = i;  // the fracture element linked to: met, or made by the break
       if (e.kind == ElementKind::Fracture) {
         // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
         g = e.fracture;
@@ -180,15 +191,22 @@ void StripModel::propagate_from(size_t j) {
         breaks_[ts] = before;  // a propagation, not a new fracture
         FractureElement& ng = st.fractures[size_t(g)];
         ng.id = src.id;
+        i_target = i + 1;
+        st.elements[i_target].id = src.id;
         ++stats_.propagated;
         const size_t r = size_t(skeleton_.find(src.id));
         fracture_count_[r] += 1;
         fracture_width_[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
+        born_[ts].emplace_back(src.id, st.length(i + 1));
       }
       FractureElement& src2 = strips_[j].fractures[size_t(tip.fe)];
       FractureElement& ge2 = st.fractures[size_t(g)];
       (up ? src2.up : src2.down) = g;
-      if ((up ? ge2.down : ge2.up) < 0) (up ? ge2.down : ge2.up) = tip.fe;
+      strips_[j].elements[tip.element].free_ends &= uint8_t(~(up ? kFreeUp : kFreeDown));
+      if ((up ? ge2.down : ge2.up) < 0) {
+        (up ? ge2.down : ge2.up) = tip.fe;
+        st.elements[i_target].free_ends &= uint8_t(~(up ? kFreeDown : kFreeUp));
+      }
     }
   }
 }

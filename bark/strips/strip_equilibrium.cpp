@@ -196,7 +196,8 @@ void write_positions(Strip& s, const EquilibriumFactor& f, const std::vector<dou
 }  // namespace
 
 void solve_equilibrium(Strip& s, EquilibriumFactor* factor) {
-  if (solve_special_case(s)) return;
+  // A valid factor means the stiffnesses are those of the last general solve.
+  if (!(factor && factor->valid) && solve_special_case(s)) return;
   thread_local EquilibriumFactor scratch_factor;
   thread_local std::vector<double> rhs;
   EquilibriumFactor& f = factor ? *factor : scratch_factor;

@@ -31,8 +31,10 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   capped_.assign(n, 0);
   residual_.assign(n, 0.0);
   over_.assign(n, 0);
+  pending_.assign(n, 0);
   tips_.resize(n);
   widths_.resize(n);
+  born_.resize(n);
   factors_.resize(n);
   tbb::parallel_for(size_t(0), n, [&](size_t j) { init_strip(j); });
   // sec. 3.2.3: check S against the softest element actually built (strips narrower than
@@ -192,10 +194,28 @@ void StripModel::update_attachment(size_t j) {
   if (!s.cyclic) s.attach.front() = s.attach.back() = 0;  // fixed ends
 }
 
+void StripModel::finish_strip(size_t j) {
+  // The end of the previous step's Figure 8 for this strip (nothing has touched it since).
+  refracture(j, step_ - 1);
+  plasticity(j);
+  pending_[j] = 0;
+}
+
+void StripModel::settle() {
+  tbb::parallel_for(size_t(0), strips_.size(), [&](size_t j) {
+    if (pending_[j]) finish_strip(j);
+  });
+  for (long long& h : hardened_) {
+    stats_.refractured += h;
+    h = 0;
+  }
+}
+
 void StripModel::grow_strip(size_t j) {
   // The substrate grows from step t to t + 1 (shrinking strategy seen forwards, sec. 5.2): each
   // anchor keeps its substrate point θ. Stiffnesses and attachment are unchanged: plasticity
   // already gave the fracture elements K_f of their rest length.
+  if (pending_[j]) finish_strip(j);
   Strip& s = strips_[j];
   const StripMetric& m = domain_.strips[j];
   auto& c = cum_[j];
@@ -231,9 +251,8 @@ void StripModel::scan_strip(size_t j) {
     const double length = s.length(i);
     if (e.kind == ElementKind::Epidermis) {
       over |= length > e.rest * e.threshold;
-    } else {
-      const FractureElement& fe = s.fractures[size_t(e.fracture)];
-      if (fe.active && (fe.up < 0 || fe.down < 0)) tips.push_back({e.fracture, int32_t(i)});
+    } else if (e.free_ends) {  // a fracture element is always active (hardening makes it epidermis)
+      tips.push_back({e.fracture, int32_t(i)});
     }
   }
   over_[j] = over;
@@ -247,7 +266,7 @@ void StripModel::plasticity(size_t j) {
   const size_t n = s.size();
   s.anchor = s.x;
   auto& widths = widths_[j];
-  widths.clear();
+  widths.clear();  // fracture ids: roots are found in measure_fractures (the sweep may merge meanwhile)
   const bool constant_kf = params_.fracture_stiffness.size() == 1;
   bool refactor = false;
   for (size_t i = 0; i < n; ++i) {
@@ -259,7 +278,7 @@ void StripModel::plasticity(size_t j) {
       refactor |= k != e.stiffness;
       e.stiffness = k;
     }
-    widths.emplace_back(skeleton_.find(s.fractures[size_t(e.fracture)].id), e.rest);
+    widths.emplace_back(e.id, e.rest);
   }
   if (refactor) factors_[j].valid = false;
 }
@@ -292,11 +311,6 @@ void StripModel::step() {
     if (try_grow(k)) return;
     while (!grown[k].load(std::memory_order_acquire)) std::this_thread::yield();  // the helper is on it
   };
-  auto finish = [&](size_t k) {
-    const size_t j = strip_at(k);
-    refracture(j);
-    plasticity(j);
-  };
   if (wrap) ensure_grown(n - 1);  // the first strip propagates into the last
   std::atomic<bool> stop{false};
   tbb::task_group helper;
@@ -310,12 +324,12 @@ void StripModel::step() {
     break_strip(j);
     if (breaks_[j] > 0) assign_new_fracture_ids(j);
     propagate_from(j);
-    if (k >= 1 && !(wrap && k - 1 == 0)) finish(k - 1);
   }
   stop.store(true, std::memory_order_relaxed);
   helper.wait();
-  if (n > 0) finish(n - 1);
-  if (wrap) finish(0);  // the last strip propagated into the first
+  // Hardening and plasticity of this step are applied to each strip when the next step grows
+  // it (its data is then in cache), or by settle().
+  std::fill(pending_.begin(), pending_.end(), char(1));
   measure_fractures();
   for (size_t j = 0; j < n; ++j) {
     stats_.created += breaks_[j];
@@ -327,6 +341,7 @@ void StripModel::step() {
     breaks_[j] = scripted_[j] = hardened_[j] = capped_[j] = arrived_[j] = 0;
   }
   ++step_;
+  if (step_ == params_.steps) settle();
 }
 
 }  // namespace phellem::bark

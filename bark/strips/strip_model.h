@@ -57,8 +57,13 @@ class StripModel {
   // Throws StripParamError when a parameter is outside its valid range.
   StripModel(StripDomain domain, StripParams params);
 
-  // One growth step (Figure 8 for every strip, then propagation).
+  // One growth step (Figure 8 for every strip, then propagation). The step's last stage,
+  // hardening and plasticity (refracture, attachment reset, fracture rest lengths), is applied
+  // to each strip when the next step grows it, while its data is in cache; settle() applies
+  // it now (done automatically after the last step). Positions, elements and the skeleton
+  // are those of the step either way, and settling changes no later result.
   void step();
+  void settle();
   int steps_done() const { return step_; }
   int steps_total() const { return params_.steps; }
   // Growth factor of the substrate at the current step relative to the final shape.
@@ -116,7 +121,8 @@ class StripModel {
   void measure_fractures();
   void propagate_from(size_t j);
   double centre_theta(size_t j, size_t element) const;
-  void refracture(size_t j);
+  void refracture(size_t j, int step);
+  void finish_strip(size_t j);
   void plasticity(size_t j);
   double width_factor(size_t j, double theta) const;
 
@@ -141,6 +147,7 @@ class StripModel {
   std::vector<double> residual_;  // per strip, when check_
   std::vector<EquilibriumFactor> factors_;   // per strip: reused while its stiffnesses are unchanged
   std::vector<char> over_;                   // per strip: an element exceeded its threshold after growth
+  std::vector<char> pending_;                // per strip: the last step's hardening and plasticity are owed
   // Per strip: fracture elements with a free end this step and their element index (kept
   // current by break_element, the only place elements are inserted during the sweep).
   struct FreeEnd {
@@ -148,7 +155,10 @@ class StripModel {
     int32_t element;
   };
   std::vector<std::vector<FreeEnd>> tips_;
-  std::vector<std::vector<std::pair<int32_t, double>>> widths_;  // per strip: (fracture root, width)
+  // Per strip, for the Inglis ratios: (fracture id, width) of the fracture elements as the
+  // strip was last settled (plasticity, normally when this step grew it: the previous step's
+  // widths) and of those born since, at birth. measure_fractures() sums them by fracture.
+  std::vector<std::vector<std::pair<int32_t, double>>> widths_, born_;
   bool sharp(int32_t id) const;
   void scan_strip(size_t j);
   void solve(size_t j);

@@ -112,6 +112,10 @@ void TreeStripBark::step() {
   }
 }
 
+void TreeStripBark::settle() {
+  for (auto& m : models_) m->settle();
+}
+
 void TreeStripBark::run(const std::function<void(int, int)>& progress) {
   if (models_.empty()) return;
   const int total = models_[0]->steps_total();

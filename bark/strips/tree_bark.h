@@ -37,6 +37,9 @@ class TreeStripBark {
 
   // One growth step of every cylinder, then the junction transfers.
   void step();
+  // Applies every model's pending hardening and plasticity (StripModel::settle): call before
+  // reading an intermediate state.
+  void settle();
   // All remaining steps; `progress` is called after each step with (done, total).
   void run(const std::function<void(int, int)>& progress = {});
 
