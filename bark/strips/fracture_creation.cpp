@@ -32,7 +32,6 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   // Material coordinate (UV0) runs over the original epidermis, E0 long.
   right.material = e.material + (e.level == 0 ? f * e.rest / epidermis0_[j] : 0.0);
   frac.kind = ElementKind::Fracture;
-  frac.free_ends = kFreeUp | kFreeDown;
   frac.level = e.level;
   frac.rest = 0;
   frac.stiffness = params_.fracture_stiffness_at(0);

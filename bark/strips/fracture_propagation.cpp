@@ -93,8 +93,9 @@ void StripModel::propagate_from(size_t j) {
   };
   std::vector<Tip> tips;
   for (const FreeEnd& f : tips_[j]) {
-    const FractureElement& fe = strips_[j].fractures[size_t(f.fracture)];
-    if (!fe.active || (fe.up >= 0 && fe.down >= 0) || !sharp(fe.id)) continue;
+    // Listed fracture elements stay fracture elements through the sweep (hardening waits).
+    const Element& e = strips_[j].elements[size_t(f.element)];
+    if (!e.free_end() || !sharp(e.id)) continue;
     tips.push_back({size_t(f.element), f.fracture});
   }
   // Element index of fracture element `fe` of this strip, searched outwards from arc position
@@ -114,7 +115,7 @@ void StripModel::propagate_from(size_t j) {
   };
   for (const Tip& tip : tips) {
     for (bool up : {true, false}) {
-      FractureElement& src = strips_[j].fractures[size_t(tip.fe)];
+      const Element& src = strips_[j].elements[tip.element];
       if ((up ? src.up : src.down) >= 0) continue;
       const double u1 = rng.symmetric();  // drawn for every tip side: stable streams
       // Tested again: a merge earlier in this loop may have changed the fracture.
@@ -155,8 +156,7 @@ void StripModel::propagate_from(size_t j) {
       // continues there.
       double base_slope = 0;  // dθ/ds of the influencing fracture (radians per metre)
       if (nearest != SIZE_MAX) {
-        const FractureElement& g = st.fractures[size_t(st.elements[nearest].fracture)];
-        const int32_t back = up ? g.down : g.up;
+        const int32_t back = up ? st.elements[nearest].down : st.elements[nearest].up;
         const double theta_g = centre_theta(ts, nearest);
         const long bi = back >= 0 ? element_of(back, x_of(j, theta_g)) : -1;
         if (bi >= 0) base_slope = wrap_angle(theta_g - centre_theta(j, size_t(bi))) / ws * (up ? 1.0 : -1.0);
@@ -173,7 +173,7 @@ void StripModel::propagate_from(size_t j) {
       if (e.kind == ElementKind::Fracture) {
         // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
         g = e.fracture;
-        const size_t other = size_t(skeleton_.find(st.fractures[size_t(g)].id));
+        const size_t other = size_t(skeleton_.find(e.id));
         if (other != root && skeleton_.merge(int32_t(root), int32_t(other))) {
           ++stats_.merged;
           const size_t r = size_t(skeleton_.find(int32_t(root))), o = r == root ? other : root;
@@ -199,14 +199,13 @@ void StripModel::propagate_from(size_t j) {
         fracture_width_[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
         born_[ts].emplace_back(src.id, st.length(i + 1));
       }
+      // Link both ways, in the fracture records and their copies in the elements.
       FractureElement& src2 = strips_[j].fractures[size_t(tip.fe)];
+      Element& src_e = strips_[j].elements[tip.element];
       FractureElement& ge2 = st.fractures[size_t(g)];
-      (up ? src2.up : src2.down) = g;
-      strips_[j].elements[tip.element].free_ends &= uint8_t(~(up ? kFreeUp : kFreeDown));
-      if ((up ? ge2.down : ge2.up) < 0) {
-        (up ? ge2.down : ge2.up) = tip.fe;
-        st.elements[i_target].free_ends &= uint8_t(~(up ? kFreeDown : kFreeUp));
-      }
+      Element& ge_e = st.elements[i_target];
+      (up ? src2.up : src2.down) = (up ? src_e.up : src_e.down) = g;
+      if ((up ? ge2.down : ge2.up) < 0) (up ? ge2.down : ge2.up) = (up ? ge_e.down : ge_e.up) = tip.fe;
     }
   }
 }

@@ -16,19 +16,16 @@ using std::size_t;
 
 enum class ElementKind : uint8_t { Epidermis, Fracture };
 
-constexpr uint8_t kFreeUp = 1, kFreeDown = 2;
-
 struct Element {
   ElementKind kind = ElementKind::Epidermis;
   // Refracture level: 0 = original epidermis; k > 0 = old fracture surface hardened into bark
   // (Lefebvre & Neyret 2001, sec. 4.1; 2002 Figure 9).
   uint8_t level = 0;
-  // Fracture elements: which sides are not yet linked to a fracture element of the
-  // neighbouring strip (kFreeUp | kFreeDown), a copy of FractureElement::up / down < 0 kept
-  // next to the element so that scans over a strip need not visit the fracture records.
-  uint8_t free_ends = 0;
   int32_t fracture = -1;  // fracture elements: index into Strip::fractures (stable)
-  int32_t id = -1;        // fracture elements: copy of FractureElement::id (likewise)
+  // Fracture elements: copies of FractureElement::id / up / down kept next to the element, so
+  // that the per-step scans and propagation need not visit the fracture records.
+  int32_t id = -1, up = -1, down = -1;
+  bool free_end() const { return up < 0 || down < 0; }
   double rest = 0;        // rest length l0 (m)
   double stiffness = 0;   // element stiffness K (epidermis: R·w/l0, sec. 5.3; fracture: K_f(l0))
   double threshold = 0;   // epidermis: jittered fracture threshold S_i on L/l0 (sec. 3.2.3)

@@ -251,7 +251,7 @@ void StripModel::scan_strip(size_t j) {
     const double length = s.length(i);
     if (e.kind == ElementKind::Epidermis) {
       over |= length > e.rest * e.threshold;
-    } else if (e.free_ends) {  // a fracture element is always active (hardening makes it epidermis)
+    } else if (e.free_end()) {  // a fracture element is always active (hardening makes it epidermis)
       tips.push_back({e.fracture, int32_t(i)});
     }
   }
@@ -307,9 +307,15 @@ void StripModel::step() {
     grown[k].store(1, std::memory_order_release);
     return true;
   };
+  size_t ahead = 0;  // the sweep's look-ahead for strips to grow while it waits
   auto ensure_grown = [&](size_t k) {
     if (try_grow(k)) return;
-    while (!grown[k].load(std::memory_order_acquire)) std::this_thread::yield();  // the helper is on it
+    // The helper is on it: grow a strip further ahead meanwhile rather than idle.
+    ahead = std::max(ahead, k + 1);
+    while (!grown[k].load(std::memory_order_acquire)) {
+      while (ahead < n && claimed[ahead].load(std::memory_order_relaxed)) ++ahead;
+      if (ahead >= n || !try_grow(ahead)) std::this_thread::yield();
+    }
   };
   if (wrap) ensure_grown(n - 1);  // the first strip propagates into the last
   std::atomic<bool> stop{false};
