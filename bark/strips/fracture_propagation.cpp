@@ -114,6 +114,7 @@ void StripModel::propagate_from(size_t j) {
     return -1;
   };
   for (const Tip& tip : tips) {
+    const double theta = centre_theta(j, tip.element);
     for (bool up : {true, false}) {
       const Element& src = strips_[j].elements[tip.element];
       if ((up ? src.up : src.down) >= 0) continue;
@@ -121,7 +122,6 @@ void StripModel::propagate_from(size_t j) {
       // Tested again: a merge earlier in this loop may have changed the fracture.
       if (!sharp(src.id)) continue;
       const size_t root = size_t(skeleton_.find(src.id));
-      const double theta = centre_theta(j, tip.element);
       const long t = neighbour(up);
       if (t < 0) {
         exits_.push_back({int(j), up, theta});
@@ -163,8 +163,9 @@ void StripModel::propagate_from(size_t j) {
       }
       // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
       const double radius = st.circumference / kTwoPi;
-      const double angle = std::atan(base_slope * radius) + jitter * u1;
-      const double dtheta = std::tan(angle) * ws / radius * (up ? 1.0 : -1.0);
+      // tan(atan(t) + b) = (t + tan b) / (1 - t tan b): the jittered slope without the atan.
+      const double ta = base_slope * radius, tb = std::tan(jitter * u1);
+      const double dtheta = (ta + tb) / (1.0 - ta * tb) * ws / radius * (up ? 1.0 : -1.0);
       const double x = x_of(ts, theta + dtheta);
       const size_t i = element_at(ts, x);
       const Element& e = st.elements[i];

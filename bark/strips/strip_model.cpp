@@ -32,6 +32,7 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   residual_.assign(n, 0.0);
   over_.assign(n, 0);
   pending_.assign(n, 0);
+  uniform_.assign(n, 0);
   tips_.resize(n);
   widths_.resize(n);
   born_.resize(n);
@@ -102,6 +103,7 @@ Eigen::Vector2d StripModel::surface_uv(size_t j, double theta) const {
 
 double StripModel::x_of(size_t j, double theta) const {
   const auto& c = cum_[j];
+  if (uniform_[j]) return theta / kTwoPi * c.back();
   const int m = int(c.size()) - 1;
   const double turns = std::floor(theta / kTwoPi);
   const double u = (theta / kTwoPi - turns) * m;
@@ -111,6 +113,7 @@ double StripModel::x_of(size_t j, double theta) const {
 
 double StripModel::theta_of(size_t j, double x) const {
   const auto& c = cum_[j];
+  if (uniform_[j]) return kTwoPi * (x / c.back());
   const int m = int(c.size()) - 1;
   const double C = c[size_t(m)];
   const double turns = std::floor(x / C);
@@ -145,6 +148,9 @@ void StripModel::init_strip(size_t j) {
   const int M = int(m.bin_length.size());
   auto& c = cum_[j];
   c.assign(size_t(M) + 1, 0.0);
+  // A strip whose bins are all alike (a straight cylinder) maps θ ↔ x linearly.
+  const auto [lo, hi] = std::minmax_element(m.bin_length.begin(), m.bin_length.end());
+  uniform_[j] = m.exponent.empty() && M > 0 && *hi - *lo <= 1e-12 * *hi;
   const double g = std::log(params_.growth_rate) * params_.steps;
   for (int k = 0; k < M; ++k) {
     const double e = m.exponent.empty() ? 1.0 : m.exponent[size_t(k)];
