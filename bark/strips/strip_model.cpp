@@ -200,10 +200,10 @@ void StripModel::update_attachment(size_t j) {
   if (!s.cyclic) s.attach.front() = s.attach.back() = 0;  // fixed ends
 }
 
-void StripModel::finish_strip(size_t j) {
+void StripModel::finish_strip(size_t j, double growth) {
   // The end of the previous step's Figure 8 for this strip (nothing has touched it since).
   refracture(j, step_ - 1);
-  plasticity(j);
+  plasticity(j, growth);
   pending_[j] = 0;
 }
 
@@ -221,15 +221,18 @@ void StripModel::grow_strip(size_t j) {
   // The substrate grows from step t to t + 1 (shrinking strategy seen forwards, sec. 5.2): each
   // anchor keeps its substrate point θ. Stiffnesses and attachment are unchanged: plasticity
   // already gave the fracture elements K_f of their rest length.
-  if (pending_[j]) finish_strip(j);
   Strip& s = strips_[j];
   const StripMetric& m = domain_.strips[j];
   auto& c = cum_[j];
   if (m.exponent.empty()) {
     const double g = params_.growth_rate;
+    if (pending_[j])
+      finish_strip(j, g);  // in the old metric; plasticity's new anchors come out grown
+    else
+      for (double& a : s.anchor) a *= g;
     for (double& v : c) v *= g;
-    for (double& a : s.anchor) a *= g;
   } else {
+    if (pending_[j]) finish_strip(j);
     std::vector<double> theta(s.anchor.size());
     for (size_t i = 0; i < theta.size(); ++i) theta[i] = theta_of(j, s.anchor[i]);
     const double lg = std::log(params_.growth_rate);
@@ -264,13 +267,15 @@ void StripModel::scan_strip(size_t j) {
   over_[j] = over;
 }
 
-void StripModel::plasticity(size_t j) {
+void StripModel::plasticity(size_t j, double growth) {
   // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
   // material fills the fractures, whose rest length becomes their current width.
   // Also lists each fracture element's (fracture, width) for the next step's Inglis ratios.
+  // `growth`: the next step's homogeneous growth applied to the new anchors in the same pass.
   Strip& s = strips_[j];
   const size_t n = s.size();
-  s.anchor = s.x;
+  s.anchor.resize(s.x.size());
+  for (size_t i = 0; i < s.x.size(); ++i) s.anchor[i] = s.x[i] * growth;
   auto& widths = widths_[j];
   widths.clear();  // fracture ids: roots are found in measure_fractures (the sweep may merge meanwhile)
   const bool constant_kf = params_.fracture_stiffness.size() == 1;

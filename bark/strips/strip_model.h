@@ -122,8 +122,8 @@ class StripModel {
   void propagate_from(size_t j);
   double centre_theta(size_t j, size_t element) const;
   void refracture(size_t j, int step);
-  void finish_strip(size_t j);
-  void plasticity(size_t j);
+  void finish_strip(size_t j, double growth = 1.0);
+  void plasticity(size_t j, double growth = 1.0);
   double width_factor(size_t j, double theta) const;
 
   StripDomain domain_;
