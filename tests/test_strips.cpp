@@ -197,6 +197,40 @@ TEST(StripModel, FracturesPerStepStayBoundedInsideTheValidRange) {
       }
 }
 
+TEST(StripModel, SettlingBetweenStepsChangesNoLaterResult) {
+  // A step's hardening and plasticity are applied lazily (when the next step grows a strip) or
+  // at once by settle(), as growth frames do: a run that settles after every step must end in
+  // the same bits as one that never does, hardening included.
+  StripParams p = small_params();
+  p.refracture_width = 0.004;
+  StripModel lazy(flat_domain(0.3, 0.3, p), p), eager(flat_domain(0.3, 0.3, p), p);
+  for (int i = 0; i < p.steps; ++i) {
+    lazy.step();
+    eager.step();
+    eager.settle();
+  }
+  ASSERT_GT(lazy.stats().refractured, 0);
+  EXPECT_EQ(lazy.stats().refractured, eager.stats().refractured);
+  EXPECT_EQ(lazy.stats().propagated, eager.stats().propagated);
+  ASSERT_EQ(lazy.strips().size(), eager.strips().size());
+  for (size_t j = 0; j < lazy.strips().size(); ++j) {
+    const Strip &a = lazy.strips()[j], &b = eager.strips()[j];
+    ASSERT_EQ(a.x, b.x) << "strip " << j;
+    ASSERT_EQ(a.anchor, b.anchor) << "strip " << j;
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a.elements[i].kind, b.elements[i].kind);
+      EXPECT_EQ(a.elements[i].rest, b.elements[i].rest);
+    }
+  }
+  // Settled, no fracture element is wider than the hardening width.
+  for (const Strip& s : lazy.strips())
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (s.elements[i].kind != ElementKind::Fracture) continue;
+      EXPECT_LE(s.length(i), p.refracture_width);
+    }
+}
+
 TEST(StripModel, BitIdenticalForAnyThreadCountAndSeedDependent) {
   StripParams p = small_params();
   auto field = [&](int threads, uint64_t seed) {
