@@ -289,7 +289,7 @@ void StripModel::plasticity(size_t j, double growth) {
       refactor |= k != e.stiffness;
       e.stiffness = k;
     }
-    widths.emplace_back(e.id, e.rest);
+    if (e.id >= 0) widths.emplace_back(e.id, e.rest);  // (a break not yet given an id is counted at birth)
   }
   if (refactor) factors_[j].valid = false;
 }

@@ -7,11 +7,12 @@
 // threshold and propagates its fractures into the neighbours before they are visited, so a
 // young sharp fracture can run along the axis within one step (brittle fracture is fast next
 // to growth) and relieve the strips it crosses. The sweep alternates direction every step so
-// that neither end is favoured. Wide fractures may then harden into bark, and plasticity
-// resets the attachment springs and the fracture rest lengths. The sweep runs as a wavefront
-// (a strip is finished as soon as both neighbours have propagated into it) and a helper task
-// grows and solves strips ahead of it. Random draws depend on (seed, strip, step) only: the
-// result is bit-identical for any thread count.
+// that neither end is favoured. Wide fractures then harden into bark, and plasticity resets
+// the attachment springs and the fracture rest lengths; nothing touches a strip between its
+// neighbours' propagation and the next step's growth, so this last stage is done as the next
+// step grows the strip (settle() does it at once). A helper task grows and solves strips
+// ahead of the sweep, and the sweep grows strips itself while it would wait. Random draws
+// depend on (seed, strip, step) only: the result is bit-identical for any thread count.
 #pragma once
 
 #include <functional>
@@ -60,8 +61,8 @@ class StripModel {
   // One growth step (Figure 8 for every strip, then propagation). The step's last stage,
   // hardening and plasticity (refracture, attachment reset, fracture rest lengths), is applied
   // to each strip when the next step grows it, while its data is in cache; settle() applies
-  // it now (done automatically after the last step). Positions, elements and the skeleton
-  // are those of the step either way, and settling changes no later result.
+  // it now (done automatically after the last step; growth frames call it). Positions and
+  // the skeleton are those of the step either way; settling changes no later result.
   void step();
   void settle();
   int steps_done() const { return step_; }
