@@ -92,10 +92,10 @@ int run_simulate(const cli::Options& o) {
       files.push_back(file);
       if (!o.no_mesh) {
         const auto tm = Clock::now();
-        const std::vector<GlbPart> mesh = sim.mesh(k);
+        const GlbMesh mesh = sim.mesh(k);
         const std::string glb = (dir / (base + "_" + sim.part_name(k) + ".glb")).string();
         write_glb(glb, base + "_" + sim.part_name(k), mesh);
-        for (const GlbPart& p : mesh) mesh_triangles += long(p.mesh.triangle_count());
+        mesh_triangles += (long long)mesh.triangle_count();
         meshes.push_back(glb);
         t_mesh += since(tm);
       }

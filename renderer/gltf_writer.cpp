@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <cstring>
+#include <map>
 
 #include "renderer/atomic_file.h"
 #include "renderer/errors.h"
@@ -42,16 +43,37 @@ int add_accessor(tinygltf::Model& model, int view, int component, int type, size
 
 }  // namespace
 
-void write_glb(const std::string& path, const std::string& mesh_name, const std::vector<GlbPart>& parts) {
+void write_glb(const std::string& path, const std::string& mesh_name, const GlbMesh& glb) {
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "phellem";
   model.buffers.emplace_back();
   tinygltf::Mesh mesh;
   mesh.name = mesh_name;
-  for (const GlbPart& part : parts) {
-    const MeshData& m = part.mesh;
-    if (m.indices.empty()) continue;
+  // The vertex attributes, written once and shared by every part's primitive.
+  const MeshData& m = glb.vertices;
+  const size_t n = m.positions.size();
+  std::map<std::string, int> attributes;
+  std::vector<double> lo{1e30, 1e30, 1e30}, hi{-1e30, -1e30, -1e30};
+  for (const Vec3f& p : m.positions)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], double(p[k]));
+      hi[k] = std::max(hi[k], double(p[k]));
+    }
+  attributes["POSITION"] = add_accessor(model, add_view(model, m.positions.data(), n * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                        TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n, lo, hi);
+  if (m.normals.size() == n)
+    attributes["NORMAL"] = add_accessor(model, add_view(model, m.normals.data(), n * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                        TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+  if (m.uvs.size() == n) {
+    // glTF puts the texture origin at the top left: v is flipped.
+    std::vector<Vec2f> uv(m.uvs);
+    for (auto& t : uv) t.y() = 1.0f - t.y();
+    attributes["TEXCOORD_0"] = add_accessor(model, add_view(model, uv.data(), n * 8, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                            TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
+  }
+  for (const GlbPart& part : glb.parts) {
+    if (part.indices.empty()) continue;
     tinygltf::Material mat;
     mat.name = part.name;
     mat.pbrMetallicRoughness.baseColorFactor = {part.base_color[0], part.base_color[1], part.base_color[2], 1.0};
@@ -59,30 +81,12 @@ void write_glb(const std::string& path, const std::string& mesh_name, const std:
     mat.pbrMetallicRoughness.roughnessFactor = part.roughness;
     mat.doubleSided = false;
     model.materials.push_back(mat);
-    std::vector<double> lo{1e30, 1e30, 1e30}, hi{-1e30, -1e30, -1e30};
-    for (const Vec3f& p : m.positions)
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], double(p[k]));
-        hi[k] = std::max(hi[k], double(p[k]));
-      }
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = int(model.materials.size() - 1);
-    const size_t n = m.positions.size();
-    prim.attributes["POSITION"] = add_accessor(model, add_view(model, m.positions.data(), n * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                               TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n, lo, hi);
-    if (m.normals.size() == n)
-      prim.attributes["NORMAL"] = add_accessor(model, add_view(model, m.normals.data(), n * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                               TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
-    if (m.uvs.size() == n) {
-      // glTF puts the texture origin at the top left: v is flipped.
-      std::vector<Vec2f> uv(m.uvs);
-      for (auto& t : uv) t.y() = 1.0f - t.y();
-      prim.attributes["TEXCOORD_0"] = add_accessor(model, add_view(model, uv.data(), n * 8, TINYGLTF_TARGET_ARRAY_BUFFER),
-                                                   TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
-    }
-    prim.indices = add_accessor(model, add_view(model, m.indices.data(), m.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, m.indices.size());
+    prim.attributes = attributes;
+    prim.indices = add_accessor(model, add_view(model, part.indices.data(), part.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, part.indices.size());
     mesh.primitives.push_back(prim);
   }
   model.meshes.push_back(mesh);

@@ -1,6 +1,7 @@
-// Meshes out as glTF 2.0 binary (.glb, through tinygltf): one primitive per part, each with
-// a metallic-roughness material of its base colour, so the file opens in Blender as is.
-// Written atomically; a failure is a UserError naming the file.
+// Meshes out as glTF 2.0 binary (.glb, through tinygltf): one mesh whose parts share its
+// vertices, one primitive per part, each with a metallic-roughness material of its base
+// colour, so the file opens in Blender as is. Written atomically; a failure is a UserError
+// naming the file.
 #pragma once
 
 #include <string>
@@ -12,12 +13,22 @@
 namespace phellem {
 
 struct GlbPart {
-  std::string name;   // material name (e.g. "epidermis", "fracture")
-  MeshData mesh;      // positions, normals, uvs (optional), indices
+  std::string name;               // material name (e.g. "epidermis", "fracture")
+  std::vector<uint32_t> indices;  // #F×3 into the mesh's vertices
   Color base_color{0.5f, 0.5f, 0.5f};
   float roughness = 0.8f;
 };
 
-void write_glb(const std::string& path, const std::string& mesh_name, const std::vector<GlbPart>& parts);
+struct GlbMesh {
+  MeshData vertices;  // positions, normals, uvs (optional); its indices are not written
+  std::vector<GlbPart> parts;
+  size_t triangle_count() const {
+    size_t n = 0;
+    for (const GlbPart& p : parts) n += p.indices.size() / 3;
+    return n;
+  }
+};
+
+void write_glb(const std::string& path, const std::string& mesh_name, const GlbMesh& mesh);
 
 }  // namespace phellem

@@ -80,13 +80,14 @@ bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
   return f;
 }
 
-std::vector<GlbPart> TreeStripSimulation::mesh(size_t k, int W, int H) const {
+GlbMesh TreeStripSimulation::mesh(size_t k, int W, int H) const {
   const bark::StripModel& model = sim_->model(k);
   if (W <= 0 || H <= 0) automatic_size(model, 2, 32, 8, 4096, &W, &H);
   const bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
   const bark::FractureMesh fm = bark::mesh_fracture_field(f, desc_->depth.max_depth);
   const bark::GeneralizedCylinder& cyl = *parts_[k].cylinder;
-  MeshData all;
+  GlbMesh out;
+  MeshData& all = out.vertices;
   for (size_t v = 0; v < fm.param.size(); ++v) {
     const double s = fm.param[v].y() / H, theta = 2 * M_PI * fm.param[v].x() / W;
     const Eigen::Vector3d p = cyl.position(s, theta) - cyl.normal(s, theta) * double(fm.depth[v]);
@@ -107,19 +108,15 @@ std::vector<GlbPart> TreeStripSimulation::mesh(size_t k, int W, int H) const {
       all.normals[pair.first - 1] = all.normals[pair.second - 1] = n;
     }
   const bark::FieldColors& c = desc_->colors;
-  std::vector<GlbPart> parts(2);
+  std::vector<GlbPart>& parts = out.parts;
+  parts.resize(2);
   parts[0].name = "epidermis";
   parts[0].base_color = Color(c.epidermis.base.x(), c.epidermis.base.y(), c.epidermis.base.z());
   parts[1].name = "fracture";
   parts[1].base_color = Color(c.fracture.base.x(), c.fracture.base.y(), c.fracture.base.z());
-  for (GlbPart& p : parts) {
-    p.mesh.positions = all.positions;
-    p.mesh.normals = all.normals;
-    p.mesh.uvs = all.uvs;
-  }
   for (size_t t = 0; t < fm.triangles.size(); ++t)
-    for (int i = 0; i < 3; ++i) parts[fm.fracture[t] ? 1 : 0].mesh.indices.push_back(uint32_t(fm.triangles[t][i]));
-  return parts;
+    for (int i = 0; i < 3; ++i) parts[fm.fracture[t] ? 1 : 0].indices.push_back(uint32_t(fm.triangles[t][i]));
+  return out;
 }
 
 std::vector<std::shared_ptr<const bark::BarkSurface>> TreeStripSimulation::surfaces() const {

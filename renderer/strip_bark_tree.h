@@ -49,8 +49,8 @@ class TreeStripSimulation {
   bark::FractureField field(size_t k, int width = 0, int height = 0) const;
   // The bark mesh of part k with the fracture geometry inserted (bark::mesh_fracture_field on
   // the field at `width` × `height`, 0: texels half a strip wide), mapped onto the cylinder and
-  // sunk by the depth; "epidermis" and "fracture" parts. `triangles` receives the count.
-  std::vector<GlbPart> mesh(size_t k, int width = 0, int height = 0) const;
+  // sunk by the depth; "epidermis" and "fracture" parts sharing the vertices.
+  GlbMesh mesh(size_t k, int width = 0, int height = 0) const;
   // Every part's BarkSurface in the current state, at the automatic resolution.
   std::vector<std::shared_ptr<const bark::BarkSurface>> surfaces() const;
 

@@ -31,12 +31,6 @@ class FractureSkeleton {
     ++merges_;
     return true;
   }
-  // Points every id straight at its root, so that find() is one lookup until the next merge.
-  // Parents always have smaller ids than their children (merge keeps the smaller root), so one
-  // increasing pass reaches the roots.
-  void flatten() {
-    for (size_t i = 0; i < parent_.size(); ++i) parent_[i] = parent_[size_t(parent_[i])];
-  }
   size_t ids() const { return parent_.size(); }
   long long merges() const { return merges_; }
 

@@ -298,13 +298,13 @@ void StripModel::step() {
   if (step_ >= params_.steps) return;
   const size_t n = strips_.size();
   exits_.clear();
-  // Figure 8 as a wavefront in sweep order: a strip is grown and solved before the sweep
-  // reaches its neighbour, broken and propagated from in its turn, and finished (hardening,
-  // plasticity) as soon as its successor has propagated into it, so each strip is visited
-  // while its data is in cache. The sweep alternates direction every step. Growing a strip
-  // touches nothing but that strip, so a helper task grows strips ahead of the sweep while
-  // this thread sweeps; whoever claims a strip first grows it, so the result does not depend
-  // on the thread count (with one thread, the sweep grows every strip itself).
+  // Figure 8 as a wavefront in sweep order: a strip is grown (after the previous step's
+  // hardening and plasticity, owed since) and solved before the sweep reaches its neighbour,
+  // then broken and propagated from in its turn, so each strip is visited while its data is in
+  // cache. The sweep alternates direction every step. Growing a strip touches nothing but that
+  // strip, so a helper task grows strips ahead of the sweep while this thread sweeps; whoever
+  // claims a strip first grows it, so the result does not depend on the thread count (with
+  // one thread, the sweep grows every strip itself).
   const bool upward = step_ % 2 == 0;
   const bool wrap = domain_.wrap_s && n > 1;
   auto strip_at = [&](size_t k) { return upward ? k : n - 1 - k; };
