@@ -19,18 +19,6 @@ using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 // Exact_predicates_tag: silhouettes and depth iso-lines may cross; CGAL splits them there.
 using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
 
-// Bilinear sample over texel centres, periodic in x, clamped in y.
-float sample(const std::vector<float>& v, int W, int H, double x, double y) {
-  x -= 0.5;
-  y = std::clamp(y - 0.5, 0.0, double(H - 1));
-  const double fx = std::floor(x), fy = std::floor(y);
-  const double tx = x - fx, ty = y - fy;
-  const int x0 = (int(fx) % W + W) % W, x1 = (x0 + 1) % W;
-  const int y0 = int(fy), y1 = std::min(y0 + 1, H - 1);
-  auto at = [&](int i, int j) { return double(v[size_t(j) * W + i]); };
-  return float((at(x0, y0) * (1 - tx) + at(x1, y0) * tx) * (1 - ty) + (at(x0, y1) * (1 - tx) + at(x1, y1) * tx) * ty);
-}
-
 }  // namespace
 
 std::vector<std::vector<Eigen::Vector2d>> contour_loops(const std::vector<float>& values, int W, int H, float level) {
@@ -153,13 +141,13 @@ FractureMesh mesh_fracture_field(const FractureField& f, double max_depth, const
     v->info() = id++;
     const Eigen::Vector2d p(v->point().x(), v->point().y());
     m.param.push_back(p);
-    m.depth.push_back(sample(f.depth, W, H, p.x(), p.y()));
+    m.depth.push_back(sample_wrapped(f.depth, W, H, p.x(), p.y()));
   }
   for (auto fc = cdt.finite_faces_begin(); fc != cdt.finite_faces_end(); ++fc) {
     const Eigen::Vector3i t(fc->vertex(0)->info(), fc->vertex(1)->info(), fc->vertex(2)->info());
     const Eigen::Vector2d c = (m.param[t[0]] + m.param[t[1]] + m.param[t[2]]) / 3.0;
     m.triangles.push_back(t);
-    m.fracture.push_back(sample(f.opening, W, H, c.x(), c.y()) > 0.5f ? 1 : 0);
+    m.fracture.push_back(sample_wrapped(f.opening, W, H, c.x(), c.y()) > 0.5f ? 1 : 0);
   }
   return m;
 }

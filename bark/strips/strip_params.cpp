@@ -6,15 +6,19 @@
 
 namespace phellem::bark {
 
+float sample_wrapped(const std::vector<float>& values, int W, int H, double x, double y) {
+  const double fx = x - 0.5, fy = std::clamp(y - 0.5, 0.0, double(H - 1));
+  const double flx = std::floor(fx);
+  const int y0 = std::min(int(fy), H - 1), y1 = std::min(y0 + 1, H - 1);
+  const double tx = fx - flx, ty = fy - y0;
+  const int x0 = (int(flx) % W + W) % W, x1 = (x0 + 1) % W;
+  auto at = [&](int i, int j) { return double(values[size_t(j) * W + i]); };
+  return float((1 - ty) * ((1 - tx) * at(x0, y0) + tx * at(x1, y0)) + ty * ((1 - tx) * at(x0, y1) + tx * at(x1, y1)));
+}
+
 float ParamImage::sample(double u, double v) const {
   if (values.empty()) return 0.0f;
-  const double fx = (u - std::floor(u)) * width - 0.5, fy = std::clamp(v * height - 0.5, 0.0, double(height - 1));
-  const double flx = std::floor(fx);
-  const int y0 = std::min(int(fy), height - 1), y1 = std::min(y0 + 1, height - 1);
-  const double tx = fx - flx, ty = fy - y0;
-  const int x0 = (int(flx) % width + width) % width, x1 = (x0 + 1) % width;
-  auto at = [&](int x, int y) { return double(values[size_t(y) * width + x]); };
-  return float((1 - ty) * ((1 - tx) * at(x0, y0) + tx * at(x1, y0)) + ty * ((1 - tx) * at(x0, y1) + tx * at(x1, y1)));
+  return sample_wrapped(values, width, height, (u - std::floor(u)) * width, v * height);
 }
 
 double StripParams::fracture_stiffness_at(double rest) const {

@@ -14,6 +14,10 @@ namespace phellem::bark {
 
 // A scalar image over the bark's (s, θ) parameter space: u = θ / 2π (columns, periodic),
 // v = s / length (rows). Values in [0, 1].
+// Bilinear sample of a W × H row-major grid at (x, y) in texel units (texel centres at
+// (i + ½, j + ½)): x wraps, y clamps.
+float sample_wrapped(const std::vector<float>& values, int W, int H, double x, double y);
+
 struct ParamImage {
   int width = 0, height = 0;
   std::vector<float> values;  // #height×#width, row-major
