@@ -325,8 +325,7 @@ Eigen::Vector2d mean_runs(const FractureField& f) {
 FractureField cylinder_field(StripParams p, int steps) {
   p.steps = steps;
   const GeneralizedCylinder c({{0, 0, 0}, {0, 0.5, 0}}, {0.07});
-  const bool along = p.orientation == FractureOrientation::Horizontal;
-  StripModel m(along ? longitudinal_domain(c, p) : cylinder_domain(c, p), p);
+  StripModel m(oriented_domain(c, p), p);
   while (m.steps_done() < m.steps_total()) m.step();
   return rasterize(m, 440, 500, DepthProfile{});
 }

@@ -97,6 +97,10 @@ StripDomain longitudinal_domain(const GeneralizedCylinder& c, const StripParams&
   return d;
 }
 
+StripDomain oriented_domain(const GeneralizedCylinder& c, const StripParams& p) {
+  return p.orientation == FractureOrientation::Horizontal ? longitudinal_domain(c, p) : cylinder_domain(c, p);
+}
+
 StripDomain flat_domain(double width, double height, const StripParams& p, int bins) {
   StripDomain d;
   d.length = height;

@@ -38,6 +38,9 @@ StripDomain cylinder_domain(const GeneralizedCylinder& cylinder, const StripPara
 // one per strip_width of mean circumference, M bins along s each; a strip's width follows the
 // local circumference, so fracture density stays constant where the limb thins.
 StripDomain longitudinal_domain(const GeneralizedCylinder& cylinder, const StripParams& p, int bins = 64);
+// The strips a cylinder's bark runs on for the params' orientation: cylinder_domain
+// (vertical fractures) or longitudinal_domain (horizontal).
+StripDomain oriented_domain(const GeneralizedCylinder& cylinder, const StripParams& p);
 // A flat sample `width` × `height` metres (θ maps to x = θ/2π · width).
 StripDomain flat_domain(double width, double height, const StripParams& p, int bins = 64);
 

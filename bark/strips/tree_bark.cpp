@@ -43,9 +43,7 @@ TreeStripBark::TreeStripBark(std::vector<TreeCylinder> cylinders, const StripPar
     // Every limb is its own instance of the bark; scripted fractures are placed on the trunk.
     p.seed = params.seed ^ (uint64_t(k) * 0x9e3779b97f4a7c15ULL);
     if (k > 0) p.scripted.clear();
-    const GeneralizedCylinder& c = *cylinders_[k].cylinder;
-    const bool along = p.orientation == FractureOrientation::Horizontal;
-    models_.push_back(std::make_unique<StripModel>(along ? longitudinal_domain(c, p) : cylinder_domain(c, p), p));
+    models_.push_back(std::make_unique<StripModel>(oriented_domain(*cylinders_[k].cylinder, p), p));
   }
   // Horizontal fractures run around each limb and end there: no junction transfer.
   if (params.orientation == FractureOrientation::Horizontal) return;
