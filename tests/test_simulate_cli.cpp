@@ -15,6 +15,16 @@
 namespace phellem {
 namespace {
 
+// All pixels of an image as floats (spec->nchannels per pixel); empty if it cannot be read.
+std::vector<float> read_pixels(const std::string& path, OIIO::ImageSpec* spec) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return {};
+  *spec = in->spec();
+  std::vector<float> px(size_t(spec->width) * spec->height * spec->nchannels);
+  if (!in->read_image(0, 0, 0, spec->nchannels, OIIO::TypeDesc::FLOAT, px.data())) return {};
+  return px;
+}
+
 std::string scene_with_bark(const std::string& bark) {
   return R"({"render": {"seed": 3}, "objects": [{"type": "tree", "name": "t", "axis": [[0, 0, 0], [0, 0.3, 0]],
               "radius": [0.05, 0.04], "branches": [{"attach": 0.6, "length": 0.15, "radius": [0.02, 0.015]}],
@@ -29,9 +39,9 @@ TEST(SimulateCli, WritesAFractureFieldPerCylinderWithTheDocumentedChannels) {
   const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --quiet --stats " + dir + "/stats.json");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* part : {"t_trunk.exr", "t_branch1.exr"}) {
-    auto in = OIIO::ImageInput::open(dir + "/out/" + part);
-    ASSERT_TRUE(in) << part;
-    const auto& spec = in->spec();
+    OIIO::ImageSpec spec;
+    const std::vector<float> px = read_pixels(dir + "/out/" + part, &spec);
+    ASSERT_FALSE(px.empty()) << part;
     EXPECT_EQ(spec.width, 64);
     EXPECT_EQ(spec.height, 96);
     std::vector<std::string> want = {"color.R", "color.G", "color.B", "opening", "depth", "uv0.u", "uv0.v",
@@ -43,8 +53,6 @@ TEST(SimulateCli, WritesAFractureFieldPerCylinderWithTheDocumentedChannels) {
     const int c_open = spec.channelindex("opening"), c_depth = spec.channelindex("depth");
     ASSERT_GE(c_open, 0);
     ASSERT_GE(c_depth, 0);
-    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
     double open = 0, depth_in = 0, depth_out = 0;
     for (size_t p = 0; p < px.size(); p += size_t(spec.nchannels)) {
       open += px[p + size_t(c_open)];
@@ -134,11 +142,9 @@ TEST(SimulateCli, BadBarkSettingsNameTheirPath) {
 
 // Coverage (alpha sum) of a rendered frame: how much of the image the tree fills.
 double coverage(const std::string& exr) {
-  auto in = OIIO::ImageInput::open(exr);
-  if (!in) return -1;
-  const OIIO::ImageSpec spec = in->spec();
-  std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data());
+  OIIO::ImageSpec spec;
+  const std::vector<float> px = read_pixels(exr, &spec);
+  if (px.empty()) return -1;
   const int a = spec.channelindex("beauty.A");
   if (a < 0) return -1;
   double sum = 0;
@@ -171,10 +177,9 @@ TEST(GrowthCli, FramesFollowTheSimulationAndTheTrunkThickens) {
   const auto still = test::run_phellem("render " + scene + " -o " + dir + "/still.exr --res 48x48 --spp 1 --quiet");
   ASSERT_EQ(still.exit_code, 0) << still.output;
   EXPECT_EQ(coverage(dir + "/still.exr"), c2);
-  auto a = OIIO::ImageInput::open(dir + "/still.exr"), b = OIIO::ImageInput::open(dir + "/f_02.exr");
-  std::vector<float> pa(48 * 48 * a->spec().nchannels), pb(pa.size());
-  a->read_image(0, 0, 0, a->spec().nchannels, OIIO::TypeDesc::FLOAT, pa.data());
-  b->read_image(0, 0, 0, b->spec().nchannels, OIIO::TypeDesc::FLOAT, pb.data());
+  OIIO::ImageSpec sa, sb;
+  const std::vector<float> pa = read_pixels(dir + "/still.exr", &sa), pb = read_pixels(dir + "/f_02.exr", &sb);
+  ASSERT_FALSE(pa.empty());
   EXPECT_EQ(pa, pb);
 }
 
@@ -214,11 +219,9 @@ TEST(SimulateCli, EpidermisImageSampleColoursTheBarkAndABadOneIsNamed) {
   const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --no-mesh --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/t_trunk.glb"));  // --no-mesh
-  auto in = OIIO::ImageInput::open(dir + "/out/t_trunk.exr");
-  ASSERT_TRUE(in);
-  const auto& spec = in->spec();
-  std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-  ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+  OIIO::ImageSpec spec;
+  const std::vector<float> px = read_pixels(dir + "/out/t_trunk.exr", &spec);
+  ASSERT_FALSE(px.empty());
   const int c_open = spec.channelindex("opening"), c_r = spec.channelindex("color.R");
   int epidermis = 0;
   for (size_t p = 0; p < px.size(); p += size_t(spec.nchannels))
