@@ -145,18 +145,8 @@ void ensure_factor(const Strip& s, EquilibriumFactor& f, bool keep) {
 // The right-hand side in displacements u_j = x_j - a_j (better conditioned than x): the
 // differences of the anchor tensions at each free node, the fixed ends of an open strip
 // entering through their known displacements. Returns the number of unknowns.
-size_t assemble(const Strip& s, std::vector<double>& rhs) {
+size_t assemble_open(const Strip& s, std::vector<double>& rhs) {
   const size_t n = s.size();
-  if (s.cyclic) {
-    rhs.resize(n);
-    double prev = anchor_tension(s, n - 1);
-    for (size_t j = 0; j < n; ++j) {
-      const double t = anchor_tension(s, j);
-      rhs[j] = t - prev;
-      prev = t;
-    }
-    return n;
-  }
   const size_t m = n - 1;
   rhs.resize(m);
   for (size_t r = 0; r < m; ++r) rhs[r] = anchor_tension(s, r + 1) - anchor_tension(s, r);
@@ -165,19 +155,45 @@ size_t assemble(const Strip& s, std::vector<double>& rhs) {
   return m;
 }
 
-// Sub-diagonal entry -K of row r (the element left of the row's node).
-double left_stiffness(const Strip& s, size_t r) { return s.elements[s.cyclic ? r - 1 : r].stiffness; }
+// Back substitution from the last row, whose value p is already in r[m - 1].
+void back_substitute(double* r, const double* cp, size_t m, double p) {
+  for (size_t i = m - 1; i-- > 0;) r[i] = p = r[i] - cp[i] * p;
+}
 
-// Forward elimination and back substitution on the eliminated matrix. The running value is
-// carried in a register: the chains are bound by latency, not by memory.
-void substitute(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs, size_t m) {
+// Open strips: forward elimination and back substitution on the eliminated matrix (row r's
+// sub-diagonal entry is -K_r, the element left of node r + 1). The running value is carried
+// in a register: the chains are bound by latency, not by memory.
+void substitute_open(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs, size_t m) {
   double* r = rhs.data();
   const double* inv = f.inv.data();
   const double* cp = f.cprime.data();
   double p = r[0] * inv[0];
   r[0] = p;
-  for (size_t i = 1; i < m; ++i) r[i] = p = (r[i] + left_stiffness(s, i) * p) * inv[i];
-  for (size_t i = m - 1; i-- > 0;) r[i] = p = r[i] - cp[i] * p;
+  for (size_t i = 1; i < m; ++i) r[i] = p = (r[i] + s.elements[i].stiffness * p) * inv[i];
+  back_substitute(r, cp, m, p);
+}
+
+// Cyclic strips: the right-hand side (the differences of the anchor tensions) and the forward
+// elimination in one pass over the elements (row i's sub-diagonal entry is -K_{i-1}).
+void assemble_and_eliminate_cyclic(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs) {
+  const size_t n = s.size();
+  rhs.resize(n);
+  double* r = rhs.data();
+  const double* a = s.anchor.data();
+  const double* inv = f.inv.data();
+  const Element* e = s.elements.data();
+  const double last = e[n - 1].stiffness * (a[0] + s.circumference - a[n - 1] - e[n - 1].rest);
+  double prev = e[0].stiffness * (a[1] - a[0] - e[0].rest);
+  double p = (prev - last) * inv[0];
+  r[0] = p;
+  for (size_t i = 1; i + 1 < n; ++i) {
+    const double t = e[i].stiffness * (a[i + 1] - a[i] - e[i].rest);
+    r[i] = p = ((t - prev) + e[i - 1].stiffness * p) * inv[i];
+    prev = t;
+  }
+  p = ((last - prev) + e[n - 2].stiffness * p) * inv[n - 1];
+  r[n - 1] = p;
+  back_substitute(r, f.cprime.data(), n, p);
 }
 
 // Node positions from the solution (cyclic strips: the Sherman–Morrison correction).
@@ -187,7 +203,11 @@ void write_positions(Strip& s, const EquilibriumFactor& f, const std::vector<dou
     const double beta = -s.elements[n - 1].stiffness;
     const double gamma = -(s.elements[n - 1].stiffness + s.elements[0].stiffness + s.attach[0]);
     const double fact = (rhs[0] + beta * rhs[n - 1] / gamma) / f.denominator;
-    for (size_t j = 0; j < n; ++j) s.x[j] = s.anchor[j] + (rhs[j] - fact * f.u[j]);
+    const double* a = s.anchor.data();
+    const double* r = rhs.data();
+    const double* u = f.u.data();
+    double* x = s.x.data();
+    for (size_t j = 0; j < n; ++j) x[j] = a[j] + (r[j] - fact * u[j]);
     return;
   }
   for (size_t r = 0; r + 1 < n; ++r) s.x[r + 1] = s.anchor[r + 1] + rhs[r];
@@ -202,8 +222,12 @@ void solve_equilibrium(Strip& s, EquilibriumFactor* factor) {
   thread_local std::vector<double> rhs;
   EquilibriumFactor& f = factor ? *factor : scratch_factor;
   ensure_factor(s, f, factor != nullptr);
-  const size_t m = assemble(s, rhs);
-  substitute(s, f, rhs, m);
+  if (s.cyclic) {
+    assemble_and_eliminate_cyclic(s, f, rhs);
+  } else {
+    const size_t m = assemble_open(s, rhs);
+    substitute_open(s, f, rhs, m);
+  }
   write_positions(s, f, rhs);
 }
 

@@ -230,7 +230,10 @@ void StripModel::grow_strip(size_t j) {
       finish_strip(j, g);  // in the old metric; plasticity's new anchors come out grown
     else
       for (double& a : s.anchor) a *= g;
-    for (double& v : c) v *= g;
+    if (uniform_[j])
+      c.back() *= g;  // θ ∝ x: only the total is used
+    else
+      for (double& v : c) v *= g;
   } else {
     if (pending_[j]) finish_strip(j);
     std::vector<double> theta(s.anchor.size());
@@ -255,9 +258,10 @@ void StripModel::scan_strip(size_t j) {
   std::vector<FreeEnd>& tips = tips_[j];
   tips.clear();
   bool over = false;
+  const double* x = s.x.data();
   for (size_t i = 0; i < n; ++i) {
     const Element& e = s.elements[i];
-    const double length = s.length(i);
+    const double length = (i + 1 < n ? x[i + 1] : s.right(i)) - x[i];
     if (e.kind == ElementKind::Epidermis) {
       over |= length > e.rest * e.threshold;
     } else if (e.free_end()) {  // a fracture element is always active (hardening makes it epidermis)
@@ -275,15 +279,17 @@ void StripModel::plasticity(size_t j, double growth) {
   Strip& s = strips_[j];
   const size_t n = s.size();
   s.anchor.resize(s.x.size());
-  for (size_t i = 0; i < s.x.size(); ++i) s.anchor[i] = s.x[i] * growth;
   auto& widths = widths_[j];
   widths.clear();  // fracture ids: roots are found in measure_fractures (the sweep may merge meanwhile)
   const bool constant_kf = params_.fracture_stiffness.size() == 1;
   bool refactor = false;
+  const double* x = s.x.data();
+  double* anchor = s.anchor.data();
   for (size_t i = 0; i < n; ++i) {
+    anchor[i] = x[i] * growth;
     Element& e = s.elements[i];
     if (e.kind != ElementKind::Fracture) continue;
-    e.rest = std::max(0.0, s.length(i));
+    e.rest = std::max(0.0, (i + 1 < n ? x[i + 1] : s.right(i)) - x[i]);
     if (!constant_kf) {
       const double k = params_.fracture_stiffness_at(e.rest);
       refactor |= k != e.stiffness;
@@ -291,6 +297,7 @@ void StripModel::plasticity(size_t j, double growth) {
     }
     if (e.id >= 0) widths.emplace_back(e.id, e.rest);  // (a break not yet given an id is counted at birth)
   }
+  if (!s.cyclic) anchor[n] = x[n] * growth;
   if (refactor) factors_[j].valid = false;
 }
 

@@ -131,7 +131,7 @@ class StripModel {
   StripParams params_;
   std::vector<Strip> strips_;
   std::vector<std::vector<double>> cum_;  // per strip: #M+1 cumulative substrate arc length now
-  std::vector<char> uniform_;             // per strip: all bins alike and no dilatation (θ ∝ x)
+  std::vector<char> uniform_;             // per strip: all bins alike and no dilatation (θ ∝ x; only cum_.back() kept current)
   std::vector<double> epidermis0_;       // per strip: original epidermis length E0
   // Per strip, for the current step: breaks (created + scripted), scripted breaks, hardened
   // fracture elements. Summed into stats_ after the parallel phases.
