@@ -227,7 +227,7 @@ void StripModel::grow_strip(size_t j) {
   if (m.exponent.empty()) {
     const double g = params_.growth_rate;
     if (pending_[j])
-      finish_strip(j, g);  // in the old metric; plasticity's new anchors come out grown
+      plasticity(j, g);  // in the old metric; the new anchors come out grown
     else
       for (double& a : s.anchor) a *= g;
     if (uniform_[j])
@@ -235,7 +235,7 @@ void StripModel::grow_strip(size_t j) {
     else
       for (double& v : c) v *= g;
   } else {
-    if (pending_[j]) finish_strip(j);
+    if (pending_[j]) plasticity(j);
     std::vector<double> theta(s.anchor.size());
     for (size_t i = 0; i < theta.size(); ++i) theta[i] = theta_of(j, s.anchor[i]);
     const double lg = std::log(params_.growth_rate);
@@ -244,6 +244,7 @@ void StripModel::grow_strip(size_t j) {
     c.swap(next);
     for (size_t i = 0; i < theta.size(); ++i) s.anchor[i] = x_of(j, theta[i]);
   }
+  pending_[j] = 0;
   s.circumference = c.back();
   if (!s.cyclic) {  // the solve moves every free node; open strips keep their ends on the substrate
     s.x.front() = 0;
@@ -319,9 +320,7 @@ void StripModel::step() {
   auto try_grow = [&](size_t k) {
     if (claimed[k].exchange(1, std::memory_order_acq_rel)) return false;
     const size_t j = strip_at(k);
-    grow_strip(j);
-    solve(j);
-    scan_strip(j);
+    advance_strip(j);
     grown[k].store(1, std::memory_order_release);
     return true;
   };

@@ -112,6 +112,10 @@ class StripModel {
 
  private:
   void init_strip(size_t j);
+  // One strip's share of a step before the sweep reaches it: the previous step's hardening
+  // and plasticity if owed, growth, equilibrium and the scan (strip_advance.cpp).
+  void advance_strip(size_t j);
+  void advance_settled(size_t j);
   void grow_strip(size_t j);
   void update_attachment(size_t j);
   void break_strip(size_t j);

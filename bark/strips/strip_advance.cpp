@@ -1,0 +1,108 @@
+// One strip's share of a growth step (Lefebvre & Neyret 2002, Figure 8): the previous step's
+// plasticity, growth of the substrate, the new equilibrium (sec. 5.1), and the scan that tells
+// the sweep whether the strip must break and which fracture ends may propagate.
+//
+// The common case — a cyclic strip on a homogeneously growing cylinder whose stiffnesses did
+// not change since its matrix was eliminated — is done in three passes over the elements
+// instead of six; it computes exactly what the general path (plasticity, grow_strip, solve,
+// scan_strip) computes, in the same order, so the bits are the same.
+#include <algorithm>
+
+#include "bark/strips/strip_equilibrium.h"
+#include "bark/strips/strip_model.h"
+
+namespace phellem::bark {
+
+void StripModel::advance_strip(size_t j) {
+  if (pending_[j]) {
+    refracture(j, step_ - 1);  // hardening changes elements, and then invalidates the factor
+    const Strip& s = strips_[j];
+    if (s.cyclic && s.size() >= 3 && factors_[j].valid && domain_.strips[j].exponent.empty() &&
+        params_.fracture_stiffness.size() == 1 && !check_) {
+      advance_settled(j);
+      pending_[j] = 0;
+      return;
+    }
+  }
+  grow_strip(j);  // the previous step's plasticity, if owed, then growth
+  solve(j);
+  scan_strip(j);
+}
+
+void StripModel::advance_settled(size_t j) {
+  Strip& s = strips_[j];
+  const EquilibriumFactor& f = factors_[j];
+  const size_t n = s.size();
+  const double g = params_.growth_rate;
+  const double c_old = s.circumference;
+  auto& c = cum_[j];
+  if (uniform_[j])
+    c.back() *= g;  // θ ∝ x: only the total is used
+  else
+    for (double& v : c) v *= g;
+  const double c_new = c.back();
+  double* x = s.x.data();
+  double* a = s.anchor.data();
+  Element* e = s.elements.data();
+  thread_local std::vector<double> rhs;
+  rhs.resize(n);
+  double* r = rhs.data();
+  auto& widths = widths_[j];
+  widths.clear();
+
+  // Pass 1, plasticity (sec. 5.1): the attachment springs restart at zero length at the grown
+  // substrate (a = g x) and new material fills the fractures, whose rest length becomes their
+  // width; with it, the right-hand side (differences of the anchor tensions
+  // T_i = K_i (a_{i+1} - a_i - l0_i)) and the forward elimination.
+  if (e[n - 1].kind == ElementKind::Fracture) e[n - 1].rest = std::max(0.0, x[0] + c_old - x[n - 1]);
+  const double a_last = x[n - 1] * g;
+  const double t_last = e[n - 1].stiffness * (x[0] * g + c_new - a_last - e[n - 1].rest);
+  const double* inv = f.inv.data();
+  double prev = t_last, p = 0;
+  double a_next = x[0] * g;
+  for (size_t i = 0; i + 1 < n; ++i) {
+    const double a_i = a_next;
+    a_next = x[i + 1] * g;
+    a[i] = a_i;
+    if (e[i].kind == ElementKind::Fracture) {
+      e[i].rest = std::max(0.0, x[i + 1] - x[i]);
+      if (e[i].id >= 0) widths.emplace_back(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
+    }
+    const double t = e[i].stiffness * (a_next - a_i - e[i].rest);
+    r[i] = p = i == 0 ? (t - prev) * inv[0] : ((t - prev) + e[i - 1].stiffness * p) * inv[i];
+    prev = t;
+  }
+  a[n - 1] = a_last;
+  if (e[n - 1].kind == ElementKind::Fracture && e[n - 1].id >= 0) widths.emplace_back(e[n - 1].id, e[n - 1].rest);
+  s.circumference = c_new;
+  r[n - 1] = p = ((t_last - prev) + e[n - 2].stiffness * p) * inv[n - 1];
+
+  // Pass 2: back substitution.
+  const double* cp = f.cprime.data();
+  for (size_t i = n - 1; i-- > 0;) r[i] = p = r[i] - cp[i] * p;
+
+  // Pass 3: positions (the Sherman–Morrison correction of the cyclic system) and the scan: is
+  // any epidermis element beyond its threshold, and which fracture elements have a free end.
+  const double beta = -e[n - 1].stiffness;
+  const double gamma = -(e[n - 1].stiffness + e[0].stiffness + s.attach[0]);
+  const double fact = (r[0] + beta * r[n - 1] / gamma) / f.denominator;
+  const double* u = f.u.data();
+  std::vector<FreeEnd>& tips = tips_[j];
+  tips.clear();
+  bool over = false;
+  auto scan = [&](size_t i, double length) {
+    if (e[i].kind == ElementKind::Epidermis)
+      over |= length > e[i].rest * e[i].threshold;
+    else if (e[i].free_end())
+      tips.push_back({e[i].fracture, int32_t(i)});
+  };
+  x[0] = a[0] + (r[0] - fact * u[0]);
+  for (size_t i = 1; i < n; ++i) {
+    x[i] = a[i] + (r[i] - fact * u[i]);
+    scan(i - 1, x[i] - x[i - 1]);
+  }
+  scan(n - 1, x[0] + c_new - x[n - 1]);
+  over_[j] = over;
+}
+
+}  // namespace phellem::bark
