@@ -51,6 +51,9 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   for (FreeEnd& t : tips_[j])
     if (size_t(t.element) > i) t.element += 2;
   tips_[j].push_back({frac.fracture, int32_t(i) + 1});
+  for (int32_t& k : element_of_[j])
+    if (size_t(k) > i) k += 2;
+  element_of_[j].push_back(int32_t(i) + 1);
   if (fe_out) *fe_out = frac.fracture;
   return true;
 }

@@ -31,6 +31,7 @@ void StripModel::measure_fractures() {
   // step grew each strip (the previous step's widths) and those of the elements born during
   // the step; kept up to date through the next step's sweep as fractures are created,
   // extended and merged. Counts are exact; widths lag by a step (0.1 % of growth).
+  skeleton_.compress();
   fracture_count_.assign(skeleton_.ids(), 0.0);
   fracture_width_.assign(skeleton_.ids(), 0.0);
   auto add = [&](const std::vector<std::pair<int32_t, double>>& list) {
@@ -98,20 +99,11 @@ void StripModel::propagate_from(size_t j) {
     if (!e.free_end() || !sharp(e.id)) continue;
     tips.push_back({size_t(f.element), f.fracture});
   }
-  // Element index of fracture element `fe` of this strip, searched outwards from arc position
-  // x (links join nearby elements), then over the whole strip.
+  // Element index of fracture record `fe` of this strip, if still a fracture (not hardened).
   const Strip& here = strips_[j];
-  auto element_of = [&](int32_t fe, double x) -> long {
-    auto is = [&](long i) { return here.elements[size_t(i)].kind == ElementKind::Fracture && here.elements[size_t(i)].fracture == fe; };
-    const long ne = long(here.size()), at = long(element_at(j, x));
-    for (long k = 0; k < std::min(ne, 33L); ++k) {
-      long i = at + (k % 2 ? (k + 1) / 2 : -k / 2);
-      i = i < 0 ? i + ne : i >= ne ? i - ne : i;
-      if (is(i)) return i;
-    }
-    for (long i = 0; i < ne; ++i)
-      if (is(i)) return i;
-    return -1;
+  auto element_of = [&](int32_t fe) -> long {
+    const long i = element_of_[j][size_t(fe)];
+    return here.elements[size_t(i)].kind == ElementKind::Fracture ? i : -1;
   };
   for (const Tip& tip : tips) {
     const double theta = centre_theta(j, tip.element);
@@ -158,7 +150,7 @@ void StripModel::propagate_from(size_t j) {
       if (nearest != SIZE_MAX) {
         const int32_t back = up ? st.elements[nearest].down : st.elements[nearest].up;
         const double theta_g = centre_theta(ts, nearest);
-        const long bi = back >= 0 ? element_of(back, x_of(j, theta_g)) : -1;
+        const long bi = back >= 0 ? element_of(back) : -1;
         if (bi >= 0) base_slope = wrap_angle(theta_g - centre_theta(j, size_t(bi))) / ws * (up ? 1.0 : -1.0);
       }
       // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.

@@ -31,6 +31,12 @@ class FractureSkeleton {
     ++merges_;
     return true;
   }
+  // Points every id straight at its root (same roots; later find() calls are one step). A
+  // parent's id is smaller than its child's (merge keeps the older id), so one pass in id
+  // order meets every parent already pointing at its root.
+  void compress() {
+    for (size_t i = 0; i < parent_.size(); ++i) parent_[i] = parent_[size_t(parent_[i])];
+  }
   size_t ids() const { return parent_.size(); }
   long long merges() const { return merges_; }
 

@@ -34,6 +34,7 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   pending_.assign(n, 0);
   uniform_.assign(n, 0);
   tips_.resize(n);
+  element_of_.resize(n);
   widths_.resize(n);
   born_.resize(n);
   factors_.resize(n);

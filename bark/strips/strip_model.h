@@ -161,6 +161,8 @@ class StripModel {
     int32_t element;
   };
   std::vector<std::vector<FreeEnd>> tips_;
+  // Per strip: element index of each fracture record (kept current by break_element).
+  std::vector<std::vector<int32_t>> element_of_;
   // Per strip, for the Inglis ratios: (fracture id, width) of the fracture elements as the
   // strip was last settled (plasticity, normally when this step grew it: the previous step's
   // widths) and of those born since, at birth. measure_fractures() sums them by fracture.
