@@ -78,128 +78,147 @@ void StripModel::queue_arrival(size_t strip, double theta) {
   if (strip < arrivals_.size()) arrivals_[strip].push_back(theta);
 }
 
+void StripModel::aim(size_t j, PropagationSide& side) const {
+  // Where a free end of strip j would cut its neighbour strip side.target (sec. 3.2.4); pure.
+  const Strip& st = strips_[side.target];
+  const size_t ts = side.target;
+  const double ws = domain_.strip_width;
+  // Base direction: parallel to the nearest fracture of the target strip whose influence
+  // f(a'·dist/width) (a threshold test) reaches the tip; otherwise along the axis.
+  const double x_straight = x_of(ts, side.theta);
+  double best = 1e300;
+  size_t nearest = SIZE_MAX;
+  const size_t ne = st.size(), at = element_at(ts, x_straight);
+  const size_t reach = std::min<size_t>(ne, 2 * kInfluenceElements + 1);
+  size_t gi = at + ne - std::min(kInfluenceElements, ne / 2);
+  if (gi >= ne) gi -= ne;
+  for (size_t k = 0; k < reach; ++k, gi = gi + 1 == ne ? 0 : gi + 1) {
+    // A fracture element is always active: hardening turns it back into epidermis.
+    if (st.elements[gi].kind != ElementKind::Fracture) continue;
+    const double gw = st.length(gi);
+    double d = std::abs(st.x[gi] + 0.5 * gw - x_straight);
+    if (st.cyclic) {
+      if (d >= st.circumference) d -= std::floor(d / st.circumference) * st.circumference;
+      d = std::min(d, st.circumference - d);
+    }
+    if (gw <= 0 || params_.influence * d >= gw || d >= best) continue;
+    best = d;
+    nearest = gi;
+  }
+  // The influencing fracture's own direction, from its element back in our strip, if it
+  // continues there (and is still a fracture there).
+  double base_slope = 0;  // dθ/ds of the influencing fracture (radians per metre)
+  if (nearest != SIZE_MAX) {
+    const int32_t back = side.up ? st.elements[nearest].down : st.elements[nearest].up;
+    if (back >= 0) {
+      const size_t bi = size_t(element_of_[j][size_t(back)]);
+      if (strips_[j].elements[bi].kind == ElementKind::Fracture)
+        base_slope = wrap_angle(centre_theta(ts, nearest) - centre_theta(j, bi)) / ws * (side.up ? 1.0 : -1.0);
+    }
+  }
+  // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
+  const double radius = st.circumference / kTwoPi;
+  // tan(atan(t) + b) = (t + tan b) / (1 - t tan b): the jittered slope without the atan.
+  const double ta = base_slope * radius, tb = side.tan_jitter;
+  const double dtheta = (ta + tb) / (1.0 - ta * tb) * ws / radius * (side.up ? 1.0 : -1.0);
+  side.x = x_of(ts, side.theta + dtheta);
+  side.element = element_at(ts, side.x);
+}
+
 void StripModel::propagate_from(size_t j) {
   const size_t n = strips_.size();
-  const double ws = domain_.strip_width;
   const double jitter = params_.propagation_jitter_deg * kPi / 180.0;
   auto neighbour = [&](bool up) -> long {
     if (up) return j + 1 < n ? long(j + 1) : (domain_.wrap_s ? 0 : -1);
     return j > 0 ? long(j - 1) : (domain_.wrap_s ? long(n - 1) : -1);
   };
+  const long up_strip = neighbour(true), down_strip = neighbour(false);
   StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
-  // Free ends of this strip (listed after growth, plus those made since in the sweep).
-  struct Tip {
-    size_t element;
-    int32_t fe;
-  };
-  std::vector<Tip> tips;
+  // The free sides of the sharp free ends of this strip (listed after growth, plus those made
+  // since in the sweep), each with its random draw. Nothing below changes strip j's elements
+  // or links (breaks and links go to the neighbours), so the list holds through the loop.
+  std::vector<PropagationSide>& sides = sides_;
+  sides.clear();
   for (const FreeEnd& f : tips_[j]) {
     // Listed fracture elements stay fracture elements through the sweep (hardening waits).
     const Element& e = strips_[j].elements[size_t(f.element)];
     if (!e.free_end() || !sharp(e.id)) continue;
-    tips.push_back({size_t(f.element), f.fracture});
-  }
-  // Element index of fracture record `fe` of this strip, if still a fracture (not hardened).
-  const Strip& here = strips_[j];
-  auto element_of = [&](int32_t fe) -> long {
-    const long i = element_of_[j][size_t(fe)];
-    return here.elements[size_t(i)].kind == ElementKind::Fracture ? i : -1;
-  };
-  for (const Tip& tip : tips) {
-    const double theta = centre_theta(j, tip.element);
+    const double theta = centre_theta(j, size_t(f.element));
     for (bool up : {true, false}) {
-      const Element& src = strips_[j].elements[tip.element];
-      if ((up ? src.up : src.down) >= 0) continue;
-      const double u1 = rng.symmetric();  // drawn for every tip side: stable streams
-      // Tested again: a merge earlier in this loop may have changed the fracture.
-      if (!sharp(src.id)) continue;
-      const size_t root = size_t(skeleton_.find(src.id));
-      const long t = neighbour(up);
-      if (t < 0) {
-        exits_.push_back({int(j), up, theta});
-        continue;
-      }
-      const size_t ts = size_t(t);
-      if (ts == j) continue;
-      Strip& st = strips_[ts];
-      // Base direction: parallel to the nearest fracture of the target strip whose influence
-      // f(a'·dist/width) (a threshold test) reaches the tip; otherwise along the axis.
-      const double x_straight = x_of(ts, theta);
-      double best = 1e300;
-      size_t nearest = SIZE_MAX;
-      const size_t ne = st.size(), at = element_at(ts, x_straight);
-      const size_t reach = std::min<size_t>(ne, 2 * kInfluenceElements + 1);
-      size_t gi = at + ne - std::min(kInfluenceElements, ne / 2);
-      if (gi >= ne) gi -= ne;
-      for (size_t k = 0; k < reach; ++k, gi = gi + 1 == ne ? 0 : gi + 1) {
-        // A fracture element is always active: hardening turns it back into epidermis.
-        if (st.elements[gi].kind != ElementKind::Fracture) continue;
-        const double gw = st.length(gi);
-        double d = std::abs(st.x[gi] + 0.5 * gw - x_straight);
-        if (st.cyclic) {
-          if (d >= st.circumference) d -= std::floor(d / st.circumference) * st.circumference;
-          d = std::min(d, st.circumference - d);
-        }
-        if (gw <= 0 || params_.influence * d >= gw || d >= best) continue;
-        best = d;
-        nearest = gi;
-      }
-      // The influencing fracture's own direction, from its element back in our strip, if it
-      // continues there.
-      double base_slope = 0;  // dθ/ds of the influencing fracture (radians per metre)
-      if (nearest != SIZE_MAX) {
-        const int32_t back = up ? st.elements[nearest].down : st.elements[nearest].up;
-        const double theta_g = centre_theta(ts, nearest);
-        const long bi = back >= 0 ? element_of(back) : -1;
-        if (bi >= 0) base_slope = wrap_angle(theta_g - centre_theta(j, size_t(bi))) / ws * (up ? 1.0 : -1.0);
-      }
-      // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
-      const double radius = st.circumference / kTwoPi;
-      // tan(atan(t) + b) = (t + tan b) / (1 - t tan b): the jittered slope without the atan.
-      const double ta = base_slope * radius, tb = std::tan(jitter * u1);
-      const double dtheta = (ta + tb) / (1.0 - ta * tb) * ws / radius * (up ? 1.0 : -1.0);
-      const double x = x_of(ts, theta + dtheta);
-      const size_t i = element_at(ts, x);
-      const Element& e = st.elements[i];
-      int32_t g = -1;
-      size_t i_target = i;  // the fracture element linked to: met, or made by the break
-      if (e.kind == ElementKind::Fracture) {
-        // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
-        g = e.fracture;
-        const size_t other = size_t(skeleton_.find(e.id));
-        if (other != root && skeleton_.merge(int32_t(root), int32_t(other))) {
-          ++stats_.merged;
-          const size_t r = size_t(skeleton_.find(int32_t(root))), o = r == root ? other : root;
-          fracture_count_[r] += fracture_count_[o];
-          fracture_width_[r] += fracture_width_[o];
-        }
-      } else {
-        // Inglis' iso-strain curves run parallel to fractures: only bark still in tension breaks.
-        if (st.length(i) < e.rest * (1.0 + params_.propagation_tension * (e.threshold - 1.0))) continue;
-        double off = x - st.x[i];
-        if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
-        const double L = st.length(i);
-        const long long before = breaks_[ts];
-        if (!break_element(ts, i, L > 0 ? off / L : 0.5, &g)) continue;
-        breaks_[ts] = before;  // a propagation, not a new fracture
-        FractureElement& ng = st.fractures[size_t(g)];
-        ng.id = src.id;
-        i_target = i + 1;
-        st.elements[i_target].id = src.id;
-        ++stats_.propagated;
-        const size_t r = size_t(skeleton_.find(src.id));
-        fracture_count_[r] += 1;
-        fracture_width_[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
-        born_[ts].emplace_back(src.id, st.length(i + 1));
-      }
-      // Link both ways, in the fracture records and their copies in the elements.
-      FractureElement& src2 = strips_[j].fractures[size_t(tip.fe)];
-      Element& src_e = strips_[j].elements[tip.element];
-      FractureElement& ge2 = st.fractures[size_t(g)];
-      Element& ge_e = st.elements[i_target];
-      (up ? src2.up : src2.down) = (up ? src_e.up : src_e.down) = g;
-      if ((up ? ge2.down : ge2.up) < 0) (up ? ge2.down : ge2.up) = (up ? ge_e.down : ge_e.up) = tip.fe;
+      if ((up ? e.up : e.down) >= 0) continue;
+      PropagationSide side;
+      side.tip = size_t(f.element);
+      side.fe = f.fracture;
+      side.up = up;
+      side.theta = theta;
+      side.tan_jitter = std::tan(jitter * rng.symmetric());  // drawn for every side: stable streams
+      const long t = up ? up_strip : down_strip;
+      side.target = t < 0 || size_t(t) == j ? SIZE_MAX : size_t(t);
+      sides.push_back(side);
     }
+  }
+  // Each side's cut on its neighbour, computed for all sides first (independent computations
+  // overlap in the processor), and again for a side whose target strip an earlier side changed.
+  for (PropagationSide& side : sides)
+    if (side.target != SIZE_MAX) aim(j, side);
+  bool changed_up = false, changed_down = false;
+  for (PropagationSide& side : sides) {
+    const Element& src = strips_[j].elements[side.tip];
+    // Tested again: a merge earlier in this loop may have changed the fracture.
+    if (!sharp(src.id)) continue;
+    const size_t root = size_t(skeleton_.find(src.id));
+    if (side.up ? up_strip < 0 : down_strip < 0) {
+      exits_.push_back({int(j), side.up, side.theta});
+      continue;
+    }
+    if (side.target == SIZE_MAX) continue;
+    const size_t ts = side.target;
+    if (side.up ? changed_up : changed_down) aim(j, side);
+    Strip& st = strips_[ts];
+    const size_t i = side.element;
+    const Element& e = st.elements[i];
+    int32_t g = -1;
+    size_t i_target = i;  // the fracture element linked to: met, or made by the break
+    if (e.kind == ElementKind::Fracture) {
+      // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
+      g = e.fracture;
+      const size_t other = size_t(skeleton_.find(e.id));
+      if (other != root && skeleton_.merge(int32_t(root), int32_t(other))) {
+        ++stats_.merged;
+        const size_t r = size_t(skeleton_.find(int32_t(root))), o = r == root ? other : root;
+        fracture_count_[r] += fracture_count_[o];
+        fracture_width_[r] += fracture_width_[o];
+      }
+    } else {
+      // Inglis' iso-strain curves run parallel to fractures: only bark still in tension breaks.
+      if (st.length(i) < e.rest * (1.0 + params_.propagation_tension * (e.threshold - 1.0))) continue;
+      double off = side.x - st.x[i];
+      if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
+      const double L = st.length(i);
+      const long long before = breaks_[ts];
+      if (!break_element(ts, i, L > 0 ? off / L : 0.5, &g)) continue;
+      breaks_[ts] = before;  // a propagation, not a new fracture
+      FractureElement& ng = st.fractures[size_t(g)];
+      ng.id = src.id;
+      i_target = i + 1;
+      st.elements[i_target].id = src.id;
+      ++stats_.propagated;
+      const size_t r = size_t(skeleton_.find(src.id));
+      fracture_count_[r] += 1;
+      fracture_width_[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
+      born_[ts].emplace_back(src.id, st.length(i + 1));
+    }
+    // Link both ways, in the fracture records and their copies in the elements.
+    FractureElement& src2 = strips_[j].fractures[size_t(side.fe)];
+    Element& src_e = strips_[j].elements[side.tip];
+    FractureElement& ge2 = st.fractures[size_t(g)];
+    Element& ge_e = st.elements[i_target];
+    (side.up ? src2.up : src2.down) = (side.up ? src_e.up : src_e.down) = g;
+    if ((side.up ? ge2.down : ge2.up) < 0) (side.up ? ge2.down : ge2.up) = (side.up ? ge_e.down : ge_e.up) = side.fe;
+    // The target strip changed (a break moves its elements, a link its back links): later
+    // sides aimed at it are aimed again. (Both neighbours are one strip when there are two.)
+    changed_up |= long(ts) == up_strip;
+    changed_down |= long(ts) == down_strip;
   }
 }
 

@@ -168,6 +168,20 @@ class StripModel {
   // widths) and of those born since, at birth. measure_fractures() sums them by fracture.
   std::vector<std::vector<std::pair<int32_t, double>>> widths_, born_;
   bool sharp(int32_t id) const;
+  // One free side of a fracture end about to propagate (sec. 3.2.4), and where it would cut
+  // its neighbour strip (aim()).
+  struct PropagationSide {
+    size_t tip = 0;          // fracture element (index in its strip)
+    int32_t fe = -1;         // its fracture record
+    bool up = true;          // towards the next strip (s+), else the previous
+    double theta = 0;        // final-shape angle of the tip
+    double tan_jitter = 0;   // tan of the random angle added to the direction
+    size_t target = SIZE_MAX;  // neighbour strip (SIZE_MAX: none)
+    double x = 0;            // aim(): arc position of the cut on the target strip
+    size_t element = 0;      // aim(): the target element containing it
+  };
+  void aim(size_t j, PropagationSide& side) const;
+  std::vector<PropagationSide> sides_;  // the sweep's scratch list in propagate_from
   void scan_strip(size_t j);
   void solve(size_t j);
 };
