@@ -78,17 +78,28 @@ void StripModel::queue_arrival(size_t strip, double theta) {
   if (strip < arrivals_.size()) arrivals_[strip].push_back(theta);
 }
 
+bool StripModel::strained(const Strip& s, size_t i) const {
+  // Strain at least propagation_tension of the way from rest to the element's threshold.
+  const Element& e = s.elements[i];
+  return !(s.length(i) < e.rest * (1.0 + params_.propagation_tension * (e.threshold - 1.0)));
+}
+
 void StripModel::aim(size_t j, PropagationSide& side) const {
-  // Where a free end of strip j would cut its neighbour strip side.target (sec. 3.2.4); pure.
+  // Whether a free end of strip j advances into its neighbour strip side.target, and where it
+  // would cut it (sec. 3.2.4); pure.
   const Strip& st = strips_[side.target];
   const size_t ts = side.target;
   const double ws = domain_.strip_width;
+  // Inglis: the stress concentrates at the tip, so the tip advances only if the bark straight
+  // across it is in tension (or already fractured there).
+  const double x_straight = x_of(ts, side.theta);
+  const size_t ne = st.size(), at = element_at(ts, x_straight);
+  side.advances = st.elements[at].kind == ElementKind::Fracture || strained(st, at);
+  if (!side.advances) return;
   // Base direction: parallel to the nearest fracture of the target strip whose influence
   // f(a'·dist/width) (a threshold test) reaches the tip; otherwise along the axis.
-  const double x_straight = x_of(ts, side.theta);
   double best = 1e300;
   size_t nearest = SIZE_MAX;
-  const size_t ne = st.size(), at = element_at(ts, x_straight);
   const size_t reach = std::min<size_t>(ne, 2 * kInfluenceElements + 1);
   size_t gi = at + ne - std::min(kInfluenceElements, ne / 2);
   if (gi >= ne) gi -= ne;
@@ -119,7 +130,7 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
   // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
   const double radius = st.circumference / kTwoPi;
   // tan(atan(t) + b) = (t + tan b) / (1 - t tan b): the jittered slope without the atan.
-  const double ta = base_slope * radius, tb = side.tan_jitter;
+  const double ta = base_slope * radius, tb = std::tan(side.jitter);
   const double dtheta = (ta + tb) / (1.0 - ta * tb) * ws / radius * (side.up ? 1.0 : -1.0);
   side.x = x_of(ts, side.theta + dtheta);
   side.element = element_at(ts, side.x);
@@ -151,7 +162,7 @@ void StripModel::propagate_from(size_t j) {
       side.fe = f.fracture;
       side.up = up;
       side.theta = theta;
-      side.tan_jitter = std::tan(jitter * rng.symmetric());  // drawn for every side: stable streams
+      side.jitter = jitter * rng.symmetric();  // drawn for every side: stable streams
       const long t = up ? up_strip : down_strip;
       side.target = t < 0 || size_t(t) == j ? SIZE_MAX : size_t(t);
       sides.push_back(side);
@@ -174,6 +185,7 @@ void StripModel::propagate_from(size_t j) {
     if (side.target == SIZE_MAX) continue;
     const size_t ts = side.target;
     if (side.up ? changed_up : changed_down) aim(j, side);
+    if (!side.advances) continue;
     Strip& st = strips_[ts];
     const size_t i = side.element;
     const Element& e = st.elements[i];
@@ -190,8 +202,8 @@ void StripModel::propagate_from(size_t j) {
         fracture_width_[r] += fracture_width_[o];
       }
     } else {
-      // Inglis' iso-strain curves run parallel to fractures: only bark still in tension breaks.
-      if (st.length(i) < e.rest * (1.0 + params_.propagation_tension * (e.threshold - 1.0))) continue;
+      // Inglis' iso-strain curves run parallel to fractures: only bark in tension breaks.
+      if (!strained(st, i)) continue;
       double off = side.x - st.x[i];
       if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
       const double L = st.length(i);

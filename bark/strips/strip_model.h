@@ -175,11 +175,14 @@ class StripModel {
     int32_t fe = -1;         // its fracture record
     bool up = true;          // towards the next strip (s+), else the previous
     double theta = 0;        // final-shape angle of the tip
-    double tan_jitter = 0;   // tan of the random angle added to the direction
+    double jitter = 0;       // random angle added to the direction (radians)
     size_t target = SIZE_MAX;  // neighbour strip (SIZE_MAX: none)
+    bool advances = false;   // aim(): the bark straight across is strained (or fractured)
     double x = 0;            // aim(): arc position of the cut on the target strip
     size_t element = 0;      // aim(): the target element containing it
   };
+  // Epidermis element i of `s` strained enough for a fracture tip to cut it.
+  bool strained(const Strip& s, size_t i) const;
   void aim(size_t j, PropagationSide& side) const;
   std::vector<PropagationSide> sides_;  // the sweep's scratch list in propagate_from
   void scan_strip(size_t j);
