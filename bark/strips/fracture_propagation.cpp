@@ -1,5 +1,6 @@
 // Fracture propagation between strips (Lefebvre & Neyret 2002, sec. 3.2.4 and 5.3).
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,24 +28,34 @@ double StripModel::centre_theta(size_t j, size_t i) const {
 void StripModel::measure_fractures() {
   // Each fracture's element count and summed width: its length is count × strip width, its
   // mean width the Inglis ratio's denominator (sec. 3.2.4: "we used the mean fracture width").
-  // Measured at the end of a step, in strip order, from the widths plasticity listed when the
+  // Measured at the end of a step from the widths plasticity listed when the
   // step grew each strip (the previous step's widths) and those of the elements born during
   // the step; kept up to date through the next step's sweep as fractures are created,
   // extended and merged. Counts are exact; widths lag by a step (0.1 % of growth).
+  // The strips' lists are summed in two fixed halves at once (whatever the thread count), the
+  // second half's sums then added to the first's.
   skeleton_.compress();
-  fracture_count_.assign(skeleton_.ids(), 0.0);
-  fracture_width_.assign(skeleton_.ids(), 0.0);
-  auto add = [&](const std::vector<std::pair<int32_t, double>>& list) {
-    for (const auto& [id, w] : list) {
-      const size_t r = size_t(skeleton_.find(id));
-      fracture_count_[r] += 1;
-      fracture_width_[r] += w;
+  const size_t ids = skeleton_.ids(), half = widths_.size() / 2;
+  fracture_count_.assign(ids, 0.0);
+  fracture_width_.assign(ids, 0.0);
+  upper_count_.assign(ids, 0.0);
+  upper_width_.assign(ids, 0.0);
+  auto add = [&](size_t first, size_t last, std::vector<double>& count, std::vector<double>& width) {
+    for (size_t j = first; j < last; ++j) {
+      for (const auto* list : {&widths_[j], &born_[j]})
+        for (const auto& [id, w] : *list) {
+          const size_t r = size_t(skeleton_.find(id));
+          count[r] += 1;
+          width[r] += w;
+        }
+      born_[j].clear();
     }
   };
-  for (size_t j = 0; j < widths_.size(); ++j) {
-    add(widths_[j]);
-    add(born_[j]);
-    born_[j].clear();
+  tbb::parallel_invoke([&] { add(0, half, fracture_count_, fracture_width_); },
+                       [&] { add(half, widths_.size(), upper_count_, upper_width_); });
+  for (size_t r = 0; r < ids; ++r) {
+    fracture_count_[r] += upper_count_[r];
+    fracture_width_[r] += upper_width_[r];
   }
 }
 

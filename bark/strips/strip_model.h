@@ -148,6 +148,7 @@ class StripModel {
   // Per fracture id (valid at roots): number of fracture elements and their summed width,
   // for the Inglis ratio; kept up to date through one step's sweep.
   std::vector<double> fracture_count_, fracture_width_;
+  std::vector<double> upper_count_, upper_width_;  // measure_fractures(): the upper half's sums
   int step_ = 0;
   bool check_ = false;
   std::vector<double> residual_;  // per strip, when check_
