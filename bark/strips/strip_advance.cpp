@@ -33,7 +33,7 @@ void StripModel::advance_strip(size_t j) {
   scan_strip(j);
 }
 
-void StripModel::advance_settled(size_t j) {
+PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
   Strip& s = strips_[j];
   const EquilibriumFactor& f = factors_[j];
   const size_t n = s.size();
@@ -87,16 +87,16 @@ void StripModel::advance_settled(size_t j) {
       if (e[i].id >= 0) widths.emplace_back(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
     }
     const double t = e[i].stiffness * (a_next - a_i - e[i].rest);
-    r[i] = p = i == 0 ? (t - prev) * inv[0] : ((t - prev) + e[i - 1].stiffness * p) * inv[i];
+    r[i] = p = i == 0 ? (t - prev) * inv[0] : forward_row(t - prev, e[i - 1].stiffness, inv[i], p);
     prev = t;
   }
   a[n - 1] = a_last;
   if (e[n - 1].kind == ElementKind::Fracture && e[n - 1].id >= 0) widths.emplace_back(e[n - 1].id, e[n - 1].rest);
   s.circumference = c_new;
-  r[n - 1] = p = ((t_last - prev) + e[n - 2].stiffness * p) * inv[n - 1];
+  r[n - 1] = p = forward_row(t_last - prev, e[n - 2].stiffness, inv[n - 1], p);
 
   // Pass 2: back substitution.
-  for (size_t i = n - 1; i-- > 0;) r[i] = p = r[i] - cp[i] * p;
+  for (size_t i = n - 1; i-- > 0;) r[i] = p = back_row(r[i], cp[i], p);
 
   // Pass 3: positions (the Sherman–Morrison correction of the cyclic system) and the scan: is
   // any epidermis element beyond its threshold, and which fracture elements have a free end.

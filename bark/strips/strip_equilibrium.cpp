@@ -156,26 +156,26 @@ size_t assemble_open(const Strip& s, std::vector<double>& rhs) {
 }
 
 // Back substitution from the last row, whose value p is already in r[m - 1].
-void back_substitute(double* r, const double* cp, size_t m, double p) {
-  for (size_t i = m - 1; i-- > 0;) r[i] = p = r[i] - cp[i] * p;
+PHELLEM_FMA_CLONES void back_substitute(double* r, const double* cp, size_t m, double p) {
+  for (size_t i = m - 1; i-- > 0;) r[i] = p = back_row(r[i], cp[i], p);
 }
 
 // Open strips: forward elimination and back substitution on the eliminated matrix (row r's
 // sub-diagonal entry is -K_r, the element left of node r + 1). The running value is carried
 // in a register: the chains are bound by latency, not by memory.
-void substitute_open(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs, size_t m) {
+PHELLEM_FMA_CLONES void substitute_open(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs, size_t m) {
   double* r = rhs.data();
   const double* inv = f.inv.data();
   const double* cp = f.cprime.data();
   double p = r[0] * inv[0];
   r[0] = p;
-  for (size_t i = 1; i < m; ++i) r[i] = p = (r[i] + s.elements[i].stiffness * p) * inv[i];
+  for (size_t i = 1; i < m; ++i) r[i] = p = forward_row(r[i], s.elements[i].stiffness, inv[i], p);
   back_substitute(r, cp, m, p);
 }
 
 // Cyclic strips: the right-hand side (the differences of the anchor tensions) and the forward
 // elimination in one pass over the elements (row i's sub-diagonal entry is -K_{i-1}).
-void assemble_and_eliminate_cyclic(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs) {
+PHELLEM_FMA_CLONES void assemble_and_eliminate_cyclic(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs) {
   const size_t n = s.size();
   rhs.resize(n);
   double* r = rhs.data();
@@ -188,10 +188,10 @@ void assemble_and_eliminate_cyclic(const Strip& s, const EquilibriumFactor& f, s
   r[0] = p;
   for (size_t i = 1; i + 1 < n; ++i) {
     const double t = e[i].stiffness * (a[i + 1] - a[i] - e[i].rest);
-    r[i] = p = ((t - prev) + e[i - 1].stiffness * p) * inv[i];
+    r[i] = p = forward_row(t - prev, e[i - 1].stiffness, inv[i], p);
     prev = t;
   }
-  p = ((last - prev) + e[n - 2].stiffness * p) * inv[n - 1];
+  p = forward_row(last - prev, e[n - 2].stiffness, inv[n - 1], p);
   r[n - 1] = p;
   back_substitute(r, f.cprime.data(), n, p);
 }
@@ -215,7 +215,7 @@ void write_positions(Strip& s, const EquilibriumFactor& f, const std::vector<dou
 
 }  // namespace
 
-void solve_equilibrium(Strip& s, EquilibriumFactor* factor) {
+PHELLEM_FMA_CLONES void solve_equilibrium(Strip& s, EquilibriumFactor* factor) {
   // A valid factor means the stiffnesses are those of the last general solve.
   if (!(factor && factor->valid) && solve_special_case(s)) return;
   thread_local EquilibriumFactor scratch_factor;

@@ -1,6 +1,7 @@
 // Quasi-static equilibrium of one strip (Lefebvre & Neyret 2002, sec. 3.2.2 and 5.1).
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "bark/strips/strip.h"
@@ -29,6 +30,22 @@ struct EquilibriumFactor {
 // the mean displacement from the anchors zero. Open strips keep both end nodes fixed.
 // `factor` (optional) is used if valid, and built (and marked valid) otherwise.
 void solve_equilibrium(Strip& strip, EquilibriumFactor* factor = nullptr);
+
+// The two recurrences of a solve with an eliminated matrix, written so that the chain through
+// the running value p is one fused multiply-add (the rest does not wait for p): a forward row
+// (rhs + K_left p) / pivot, with inv = 1 / pivot, and a back row r - c' p. std::fma is exactly
+// rounded, so the bits are the same on every machine, with or without an FMA unit.
+inline double forward_row(double rhs, double k_left, double inv, double p) { return std::fma(k_left * inv, p, rhs * inv); }
+inline double back_row(double r, double cprime, double p) { return std::fma(-cprime, p, r); }
+
+// Where the processor has FMA instructions (x86-64-v3), the hot solves are compiled a second
+// time to use them, chosen when the program loads; elsewhere std::fma is done in software.
+// (The build turns off implicit contraction, so both compilations give the same bits.)
+#if defined(__x86_64__) && defined(__GNUC__)
+#define PHELLEM_FMA_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define PHELLEM_FMA_CLONES
+#endif
 
 // Largest nodal force imbalance relative to the largest force in the strip (element tension
 // or attachment force); 0 for a strip without free nodes.
