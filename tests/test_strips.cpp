@@ -357,3 +357,30 @@ TEST(StripOrientation, AxialStripsFollowTheLocalCircumference) {
   for (double b : m.bin_length) along += b;
   EXPECT_NEAR(along, std::hypot(1.0, 0.1), 1e-3);
 }
+
+TEST(StripModel, TipAdvancesOnlyIntoStretchedBark) {
+  // Inglis: the stress concentrates at a tip, so a sharp tip advances only if the bark across
+  // it in the next strip is in tension. Strip 16's substrate does not grow (a zero dilatation
+  // exponent), so its bark stays at rest; strip 14 is stretched like the rest.
+  StripParams p = small_params();
+  p.threshold_noise = 0;
+  p.threshold = p.growth_rate;  // nothing breaks on its own before the scripted fracture
+  p.steps = 3;
+  p.inglis_threshold = 1e-3;  // any sharp fracture propagates
+  p.propagation_tension = 0.5;
+  p.scripted.push_back({0.155, 3.0, 0});
+  StripDomain domain = flat_domain(0.3, 0.3, p);
+  const auto run_step = [&](const StripDomain& d) {
+    StripModel m(d, p);
+    m.step();
+    EXPECT_EQ(m.stats().scripted, 1);
+    return m.strips()[15].fractures.at(0);
+  };
+  const FractureElement free_growth = run_step(domain);
+  EXPECT_GE(free_growth.up, 0);
+  EXPECT_GE(free_growth.down, 0);
+  domain.strips[16].exponent.assign(domain.strips[16].bin_length.size(), 0.0);
+  const FractureElement at_rest_above = run_step(domain);
+  EXPECT_LT(at_rest_above.up, 0) << "advanced into bark at rest";
+  EXPECT_GE(at_rest_above.down, 0) << "did not advance into stretched bark";
+}
