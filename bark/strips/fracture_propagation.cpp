@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip_model.h"
@@ -89,6 +90,20 @@ void StripModel::queue_arrival(size_t strip, double theta) {
   if (strip < arrivals_.size()) arrivals_[strip].push_back(theta);
 }
 
+double StripModel::influence_distance(const Strip& s, size_t i, double x) const {
+  // sec. 3.2.4: a fracture of width w influences points closer than w / a' to it (the
+  // threshold form of f(a'·dist/width)). A fracture element is always active: hardening
+  // turns it back into epidermis.
+  if (s.elements[i].kind != ElementKind::Fracture) return std::numeric_limits<double>::infinity();
+  const double w = s.length(i);
+  double d = std::abs(s.x[i] + 0.5 * w - x);
+  if (s.cyclic) {
+    if (d >= s.circumference) d -= std::floor(d / s.circumference) * s.circumference;
+    d = std::min(d, s.circumference - d);
+  }
+  return w > 0 && params_.influence * d < w ? d : std::numeric_limits<double>::infinity();
+}
+
 bool StripModel::strained(const Strip& s, size_t i) const {
   // Strain at least propagation_tension of the way from rest to the element's threshold.
   const Element& e = s.elements[i];
@@ -102,30 +117,28 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
   const size_t ts = side.target;
   const double ws = domain_.strip_width;
   // Inglis: the stress concentrates at the tip, so the tip advances only if the bark straight
-  // across it is in tension (or already fractured there).
+  // across it is in tension, or if a fracture there or beside it draws it (its influence
+  // reaches the tip).
   const double x_straight = x_of(ts, side.theta);
   const size_t ne = st.size(), at = element_at(ts, x_straight);
-  side.advances = st.elements[at].kind == ElementKind::Fracture || strained(st, at);
+  const size_t left = at == 0 ? ne - 1 : at - 1, right = at + 1 == ne ? 0 : at + 1;
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  side.advances = st.elements[at].kind == ElementKind::Fracture || strained(st, at) ||
+                  influence_distance(st, left, x_straight) < kNone || influence_distance(st, right, x_straight) < kNone;
   if (!side.advances) return;
   // Base direction: parallel to the nearest fracture of the target strip whose influence
-  // f(a'·dist/width) (a threshold test) reaches the tip; otherwise along the axis.
-  double best = 1e300;
+  // reaches the tip; otherwise along the axis.
+  double best = kNone;
   size_t nearest = SIZE_MAX;
   const size_t reach = std::min<size_t>(ne, 2 * kInfluenceElements + 1);
   size_t gi = at + ne - std::min(kInfluenceElements, ne / 2);
   if (gi >= ne) gi -= ne;
   for (size_t k = 0; k < reach; ++k, gi = gi + 1 == ne ? 0 : gi + 1) {
-    // A fracture element is always active: hardening turns it back into epidermis.
-    if (st.elements[gi].kind != ElementKind::Fracture) continue;
-    const double gw = st.length(gi);
-    double d = std::abs(st.x[gi] + 0.5 * gw - x_straight);
-    if (st.cyclic) {
-      if (d >= st.circumference) d -= std::floor(d / st.circumference) * st.circumference;
-      d = std::min(d, st.circumference - d);
+    const double d = influence_distance(st, gi, x_straight);
+    if (d < best) {
+      best = d;
+      nearest = gi;
     }
-    if (gw <= 0 || params_.influence * d >= gw || d >= best) continue;
-    best = d;
-    nearest = gi;
   }
   // The influencing fracture's own direction, from its element back in our strip, if it
   // continues there (and is still a fracture there).

@@ -178,12 +178,15 @@ class StripModel {
     double theta = 0;        // final-shape angle of the tip
     double jitter = 0;       // random angle added to the direction (radians)
     size_t target = SIZE_MAX;  // neighbour strip (SIZE_MAX: none)
-    bool advances = false;   // aim(): the bark straight across is strained (or fractured)
+    bool advances = false;   // aim(): strained bark or a fracture's influence lets the tip advance
     double x = 0;            // aim(): arc position of the cut on the target strip
     size_t element = 0;      // aim(): the target element containing it
   };
   // Epidermis element i of `s` strained enough for a fracture tip to cut it.
   bool strained(const Strip& s, size_t i) const;
+  // Distance from arc position x to fracture element i of `s` if its influence reaches x,
+  // else +∞.
+  double influence_distance(const Strip& s, size_t i, double x) const;
   void aim(size_t j, PropagationSide& side) const;
   std::vector<PropagationSide> sides_;  // the sweep's scratch list in propagate_from
   void scan_strip(size_t j);
