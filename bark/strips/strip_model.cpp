@@ -131,14 +131,18 @@ double StripModel::theta_of(size_t j, double x) const {
 
 size_t StripModel::element_at(size_t j, double x) const {
   const Strip& s = strips_[j];
-  if (s.cyclic) {
-    const double C = s.circumference;
-    x = s.x[0] + (x - s.x[0]) - std::floor((x - s.x[0]) / C) * C;
-  }
-  // The last node at or before x (0 if none): start from the proportional guess and walk.
   const long n = long(s.size());
-  const double span = (s.cyclic ? s.x[0] + s.circumference : s.x[size_t(n)]) - s.x[0];
-  long i = span > 0 ? std::clamp(long((x - s.x[0]) / span * double(n)), 0L, n - 1) : 0;
+  // The last node at or before x (0 if none): start from the proportional guess (the fraction
+  // of the strip before x) and walk.
+  double guess = 0;
+  if (s.cyclic) {
+    const double C = s.circumference, turns = (x - s.x[0]) / C, whole = std::floor(turns);
+    x = s.x[0] + (x - s.x[0]) - whole * C;
+    guess = turns - whole;
+  } else if (const double span = s.x[size_t(n)] - s.x[0]; span > 0) {
+    guess = (x - s.x[0]) / span;
+  }
+  long i = std::min(long(std::clamp(guess, 0.0, 1.0) * double(n)), n - 1);
   while (i > 0 && s.x[size_t(i)] > x) --i;
   while (i + 1 < n && s.x[size_t(i) + 1] <= x) ++i;
   return size_t(i);
