@@ -39,12 +39,8 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
   const size_t n = s.size();
   const double g = params_.growth_rate;
   const double c_old = s.circumference;
-  auto& c = cum_[j];
-  if (uniform_[j])
-    c.back() *= g;  // θ ∝ x: only the total is used
-  else
-    for (double& v : c) v *= g;
-  const double c_new = c.back();
+  scale_metric(j, g);
+  const double c_new = cum_[j].back();
   double* x = s.x.data();
   double* a = s.anchor.data();
   Element* e = s.elements.data();

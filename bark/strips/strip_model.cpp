@@ -205,21 +205,27 @@ void StripModel::update_attachment(size_t j) {
   if (!s.cyclic) s.attach.front() = s.attach.back() = 0;  // fixed ends
 }
 
-void StripModel::finish_strip(size_t j, double growth) {
-  // The end of the previous step's Figure 8 for this strip (nothing has touched it since).
-  refracture(j, step_ - 1);
-  plasticity(j, growth);
-  pending_[j] = 0;
-}
-
 void StripModel::settle() {
+  // The end of the last step's Figure 8 for every strip that owes it (nothing has touched
+  // them since).
   tbb::parallel_for(size_t(0), strips_.size(), [&](size_t j) {
-    if (pending_[j]) finish_strip(j);
+    if (!pending_[j]) return;
+    refracture(j, step_ - 1);
+    plasticity(j);
+    pending_[j] = 0;
   });
   for (long long& h : hardened_) {
     stats_.refractured += h;
     h = 0;
   }
+}
+
+void StripModel::scale_metric(size_t j, double g) {
+  auto& c = cum_[j];
+  if (uniform_[j])
+    c.back() *= g;  // θ ∝ x: only the total is used
+  else
+    for (double& v : c) v *= g;
 }
 
 void StripModel::grow_strip(size_t j) {
@@ -235,10 +241,7 @@ void StripModel::grow_strip(size_t j) {
       plasticity(j, g);  // in the old metric; the new anchors come out grown
     else
       for (double& a : s.anchor) a *= g;
-    if (uniform_[j])
-      c.back() *= g;  // θ ∝ x: only the total is used
-    else
-      for (double& v : c) v *= g;
+    scale_metric(j, g);
   } else {
     if (pending_[j]) plasticity(j);
     std::vector<double> theta(s.anchor.size());

@@ -117,6 +117,8 @@ class StripModel {
   void advance_strip(size_t j);
   void advance_settled(size_t j);
   void grow_strip(size_t j);
+  // Homogeneous growth of strip j's substrate metric by g.
+  void scale_metric(size_t j, double g);
   void update_attachment(size_t j);
   void break_strip(size_t j);
   bool break_element(size_t j, size_t i, double f, int32_t* fe_out);
@@ -127,7 +129,6 @@ class StripModel {
   void propagate_from(size_t j);
   double centre_theta(size_t j, size_t element) const;
   void refracture(size_t j, int step);
-  void finish_strip(size_t j, double growth = 1.0);
   void plasticity(size_t j, double growth = 1.0);
   double width_factor(size_t j, double theta) const;
 
