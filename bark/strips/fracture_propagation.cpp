@@ -43,9 +43,16 @@ void StripModel::measure_fractures() {
   upper_width_.assign(ids, 0.0);
   auto add = [&](size_t first, size_t last, std::vector<double>& count, std::vector<double>& width) {
     for (size_t j = first; j < last; ++j) {
+      // The lists were written as the strips grew, long evicted, one allocation per strip
+      // (nothing a hardware prefetcher follows): fetch two strips ahead.
+      if (j + 2 < last) {
+        const auto& next = widths_[j + 2];
+        const char* p = reinterpret_cast<const char*>(next.data());
+        for (size_t o = 0; o < next.size() * sizeof(next[0]); o += 64) __builtin_prefetch(p + o);
+      }
       for (const auto* list : {&widths_[j], &born_[j]})
         for (const auto& [id, w] : *list) {
-          const size_t r = size_t(skeleton_.find(id));
+          const size_t r = size_t(skeleton_.compressed_root(id));
           count[r] += 1;
           width[r] += w;
         }
@@ -169,6 +176,12 @@ void StripModel::propagate_from(size_t j) {
   };
   const long up_strip = neighbour(true), down_strip = neighbour(false);
   StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
+  // aim() looks up the elements of this strip that fractures in the neighbours link back to;
+  // the record → element table was last touched a step ago: fetch it now, all at once.
+  {
+    const std::vector<int32_t>& table = element_of_[j];
+    for (size_t k = 0; k < table.size(); k += 16) __builtin_prefetch(&table[k]);
+  }
   // The free sides of the sharp free ends of this strip (listed after growth, plus those made
   // since in the sweep), each with its random draw. Nothing below changes strip j's elements
   // or links (breaks and links go to the neighbours), so the list holds through the loop.

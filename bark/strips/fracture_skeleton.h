@@ -37,6 +37,9 @@ class FractureSkeleton {
   void compress() {
     for (size_t i = 0; i < parent_.size(); ++i) parent_[i] = parent_[size_t(parent_[i])];
   }
+  // The root of `id` right after compress() (and before any merge): its parent, read without
+  // a loop.
+  int32_t compressed_root(int32_t id) const { return parent_[size_t(id)]; }
   size_t ids() const { return parent_.size(); }
   long long merges() const { return merges_; }
 

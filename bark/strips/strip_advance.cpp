@@ -78,16 +78,15 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
     const double a_i = a_next;
     a_next = x[i + 1] * g;
     a[i] = a_i;
-    if (e[i].kind == ElementKind::Fracture) {
-      e[i].rest = std::max(0.0, x[i + 1] - x[i]);
-      if (e[i].id >= 0) widths.emplace_back(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
-    }
+    // A select, not a branch: which elements are fractures follows no pattern a branch
+    // predictor could learn (an epidermis element's rest length is stored back unchanged).
+    const double width = std::max(0.0, x[i + 1] - x[i]);
+    e[i].rest = e[i].kind == ElementKind::Fracture ? width : e[i].rest;
     const double t = e[i].stiffness * (a_next - a_i - e[i].rest);
     r[i] = p = i == 0 ? (t - prev) * inv[0] : forward_row(t - prev, e[i - 1].stiffness, inv[i], p);
     prev = t;
   }
   a[n - 1] = a_last;
-  if (e[n - 1].kind == ElementKind::Fracture && e[n - 1].id >= 0) widths.emplace_back(e[n - 1].id, e[n - 1].rest);
   s.circumference = c_new;
   r[n - 1] = p = forward_row(t_last - prev, e[n - 2].stiffness, inv[n - 1], p);
 
@@ -95,7 +94,8 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
   for (size_t i = n - 1; i-- > 0;) r[i] = p = back_row(r[i], cp[i], p);
 
   // Pass 3: positions (the Sherman–Morrison correction of the cyclic system) and the scan: is
-  // any epidermis element beyond its threshold, and which fracture elements have a free end.
+  // any epidermis element beyond its threshold, which fracture elements have a free end, and
+  // the fracture widths (their rest lengths since pass 1) for the Inglis ratios.
   const double beta = -e[n - 1].stiffness;
   const double gamma = -(e[n - 1].stiffness + e[0].stiffness + s.attach[0]);
   const double fact = (r[0] + beta * r[n - 1] / gamma) / f.denominator;
@@ -105,8 +105,10 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
   auto scan = [&](size_t i, double length) {
     if (e[i].kind == ElementKind::Epidermis)
       over |= length > e[i].rest * e[i].threshold;
-    else if (e[i].free_end())
-      tips.push_back({e[i].fracture, int32_t(i)});
+    else {
+      if (e[i].free_end()) tips.push_back({e[i].fracture, int32_t(i)});
+      if (e[i].id >= 0) widths.emplace_back(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
+    }
   };
   x[0] = a[0] + (r[0] - fact * u[0]);
   for (size_t i = 1; i < n; ++i) {
