@@ -1,6 +1,4 @@
 // Fracture propagation between strips (Lefebvre & Neyret 2002, sec. 3.2.4 and 5.3).
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -29,41 +27,34 @@ double StripModel::centre_theta(size_t j, size_t i) const {
 void StripModel::measure_fractures() {
   // Each fracture's element count and summed width: its length is count × strip width, its
   // mean width the Inglis ratio's denominator (sec. 3.2.4: "we used the mean fracture width").
-  // Measured at the end of a step from the widths plasticity listed when the
-  // step grew each strip (the previous step's widths) and those of the elements born during
-  // the step; kept up to date through the next step's sweep as fractures are created,
-  // extended and merged. Counts are exact; widths lag by a step (0.1 % of growth).
-  // The strips' lists are summed in two fixed halves at once (whatever the thread count), the
-  // second half's sums then added to the first's.
+  // Measured at the end of a step from the sums plasticity made by fracture id as the step
+  // grew each strip (the previous step's widths), and from the elements born during the step;
+  // kept up to date through the next step's sweep as fractures are created, extended and
+  // merged. Counts are exact; widths lag by a step (0.1 % of growth). The settled widths are
+  // summed as integers (whatever thread settled a strip, the total is the same), per root,
+  // then the births in strip order.
   skeleton_.compress();
-  const size_t ids = skeleton_.ids(), half = widths_.size() / 2;
+  const size_t ids = skeleton_.ids(), summed = sums_[0].count.size();
   fracture_count_.assign(ids, 0.0);
   fracture_width_.assign(ids, 0.0);
-  upper_count_.assign(ids, 0.0);
-  upper_width_.assign(ids, 0.0);
-  auto add = [&](size_t first, size_t last, std::vector<double>& count, std::vector<double>& width) {
-    for (size_t j = first; j < last; ++j) {
-      // The lists were written as the strips grew, long evicted, one allocation per strip
-      // (nothing a hardware prefetcher follows): fetch two strips ahead.
-      if (j + 2 < last) {
-        const auto& next = widths_[j + 2];
-        const char* p = reinterpret_cast<const char*>(next.data());
-        for (size_t o = 0; o < next.size() * sizeof(next[0]); o += 64) __builtin_prefetch(p + o);
-      }
-      for (const auto* list : {&widths_[j], &born_[j]})
-        for (const auto& [id, w] : *list) {
-          const size_t r = size_t(skeleton_.compressed_root(id));
-          count[r] += 1;
-          width[r] += w;
-        }
-      born_[j].clear();
+  root_width_.assign(ids, 0);
+  for (size_t id = 0; id < summed; ++id) {
+    const size_t r = size_t(skeleton_.compressed_root(int32_t(id)));
+    fracture_count_[r] += double(sums_[0].count[id] + sums_[1].count[id]);
+    root_width_[r] += sums_[0].width[id] + sums_[1].width[id];
+  }
+  for (size_t r = 0; r < ids; ++r) fracture_width_[r] = double(root_width_[r]) * 0x1p-50;
+  for (auto& born : born_) {
+    for (const auto& [id, w] : born) {
+      const size_t r = size_t(skeleton_.compressed_root(id));
+      fracture_count_[r] += 1;
+      fracture_width_[r] += w;
     }
-  };
-  tbb::parallel_invoke([&] { add(0, half, fracture_count_, fracture_width_); },
-                       [&] { add(half, widths_.size(), upper_count_, upper_width_); });
-  for (size_t r = 0; r < ids; ++r) {
-    fracture_count_[r] += upper_count_[r];
-    fracture_width_[r] += upper_width_[r];
+    born.clear();
+  }
+  for (InglisSums& s : sums_) {
+    s.width.assign(ids, 0);
+    s.count.assign(ids, 0);
   }
 }
 

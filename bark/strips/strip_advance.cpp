@@ -17,23 +17,23 @@ namespace {
 constexpr size_t kAhead = 16;  // elements fetched ahead in the first pass
 }  // namespace
 
-void StripModel::advance_strip(size_t j) {
+void StripModel::advance_strip(size_t j, int grower) {
   if (pending_[j]) {
     refracture(j, step_ - 1);  // hardening changes elements, and then invalidates the factor
     const Strip& s = strips_[j];
     if (s.cyclic && s.size() >= 3 && factors_[j].valid && domain_.strips[j].exponent.empty() &&
         params_.fracture_stiffness.size() == 1 && !check_) {
-      advance_settled(j);
+      advance_settled(j, grower);
       pending_[j] = 0;
       return;
     }
   }
-  grow_strip(j);  // the previous step's plasticity, if owed, then growth
+  grow_strip(j, grower);  // the previous step's plasticity, if owed, then growth
   solve(j);
   scan_strip(j);
 }
 
-PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
+PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   Strip& s = strips_[j];
   const EquilibriumFactor& f = factors_[j];
   const size_t n = s.size();
@@ -47,8 +47,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
   thread_local std::vector<double> rhs;
   rhs.resize(n);
   double* r = rhs.data();
-  auto& widths = widths_[j];
-  widths.clear();
+  InglisSums& sums = sums_[grower];
 
   // Pass 1, plasticity (sec. 5.1): the attachment springs restart at zero length at the grown
   // substrate (a = g x) and new material fills the fractures, whose rest length becomes their
@@ -107,7 +106,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j) {
       over |= length > e[i].rest * e[i].threshold;
     else {
       if (e[i].free_end()) tips.push_back({e[i].fracture, int32_t(i)});
-      if (e[i].id >= 0) widths.emplace_back(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
+      if (e[i].id >= 0) sums.add(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
     }
   };
   x[0] = a[0] + (r[0] - fact * u[0]);

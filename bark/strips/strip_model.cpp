@@ -35,7 +35,6 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   uniform_.assign(n, 0);
   tips_.resize(n);
   element_of_.resize(n);
-  widths_.resize(n);
   born_.resize(n);
   factors_.resize(n);
   tbb::parallel_for(size_t(0), n, [&](size_t j) { init_strip(j); });
@@ -208,12 +207,14 @@ void StripModel::update_attachment(size_t j) {
 void StripModel::settle() {
   // The end of the last step's Figure 8 for every strip that owes it (nothing has touched
   // them since).
-  tbb::parallel_for(size_t(0), strips_.size(), [&](size_t j) {
-    if (!pending_[j]) return;
+  // In strip order on this thread: the Inglis sums it adds to are the sweep's (one step's worth
+  // of plasticity, not worth a second accumulator set).
+  for (size_t j = 0; j < strips_.size(); ++j) {
+    if (!pending_[j]) continue;
     refracture(j, step_ - 1);
-    plasticity(j);
+    plasticity(j, 0);
     pending_[j] = 0;
-  });
+  }
   for (long long& h : hardened_) {
     stats_.refractured += h;
     h = 0;
@@ -228,7 +229,7 @@ void StripModel::scale_metric(size_t j, double g) {
     for (double& v : c) v *= g;
 }
 
-void StripModel::grow_strip(size_t j) {
+void StripModel::grow_strip(size_t j, int grower) {
   // The substrate grows from step t to t + 1 (shrinking strategy seen forwards, sec. 5.2): each
   // anchor keeps its substrate point θ. Stiffnesses and attachment are unchanged: plasticity
   // already gave the fracture elements K_f of their rest length.
@@ -238,12 +239,12 @@ void StripModel::grow_strip(size_t j) {
   if (m.exponent.empty()) {
     const double g = params_.growth_rate;
     if (pending_[j])
-      plasticity(j, g);  // in the old metric; the new anchors come out grown
+      plasticity(j, grower, g);  // in the old metric; the new anchors come out grown
     else
       for (double& a : s.anchor) a *= g;
     scale_metric(j, g);
   } else {
-    if (pending_[j]) plasticity(j);
+    if (pending_[j]) plasticity(j, grower);
     std::vector<double> theta(s.anchor.size());
     for (size_t i = 0; i < theta.size(); ++i) theta[i] = theta_of(j, s.anchor[i]);
     const double lg = std::log(params_.growth_rate);
@@ -280,7 +281,7 @@ void StripModel::scan_strip(size_t j) {
   over_[j] = over;
 }
 
-void StripModel::plasticity(size_t j, double growth) {
+void StripModel::plasticity(size_t j, int grower, double growth) {
   // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
   // material fills the fractures, whose rest length becomes their current width.
   // Also lists each fracture element's (fracture, width) for the next step's Inglis ratios.
@@ -288,8 +289,7 @@ void StripModel::plasticity(size_t j, double growth) {
   Strip& s = strips_[j];
   const size_t n = s.size();
   s.anchor.resize(s.x.size());
-  auto& widths = widths_[j];
-  widths.clear();  // fracture ids: roots are found in measure_fractures (the sweep may merge meanwhile)
+  InglisSums& sums = sums_[grower];  // by fracture id: roots are found in measure_fractures (the sweep may merge meanwhile)
   const bool constant_kf = params_.fracture_stiffness.size() == 1;
   bool refactor = false;
   const double* x = s.x.data();
@@ -304,7 +304,7 @@ void StripModel::plasticity(size_t j, double growth) {
       refactor |= k != e.stiffness;
       e.stiffness = k;
     }
-    if (e.id >= 0) widths.emplace_back(e.id, e.rest);  // (a break not yet given an id is counted at birth)
+    if (e.id >= 0) sums.add(e.id, e.rest);  // (a break not yet given an id is counted at birth)
   }
   if (!s.cyclic) anchor[n] = x[n] * growth;
   if (refactor) factors_[j].valid = false;
@@ -325,28 +325,28 @@ void StripModel::step() {
   const bool wrap = domain_.wrap_s && n > 1;
   auto strip_at = [&](size_t k) { return upward ? k : n - 1 - k; };
   const auto claimed = std::make_unique<std::atomic<char>[]>(n), grown = std::make_unique<std::atomic<char>[]>(n);
-  auto try_grow = [&](size_t k) {
+  auto try_grow = [&](size_t k, int grower) {
     if (claimed[k].exchange(1, std::memory_order_acq_rel)) return false;
     const size_t j = strip_at(k);
-    advance_strip(j);
+    advance_strip(j, grower);
     grown[k].store(1, std::memory_order_release);
     return true;
   };
   size_t ahead = 0;  // the sweep's look-ahead for strips to grow while it waits
   auto ensure_grown = [&](size_t k) {
-    if (try_grow(k)) return;
+    if (try_grow(k, 0)) return;
     // The helper is on it: grow a strip further ahead meanwhile rather than idle.
     ahead = std::max(ahead, k + 1);
     while (!grown[k].load(std::memory_order_acquire)) {
       while (ahead < n && claimed[ahead].load(std::memory_order_relaxed)) ++ahead;
-      if (ahead >= n || !try_grow(ahead)) std::this_thread::yield();
+      if (ahead >= n || !try_grow(ahead, 0)) std::this_thread::yield();
     }
   };
   if (wrap) ensure_grown(n - 1);  // the first strip propagates into the last
   std::atomic<bool> stop{false};
   tbb::task_group helper;
   helper.run([&] {
-    for (size_t k = 0; k < n && !stop.load(std::memory_order_relaxed); ++k) try_grow(k);
+    for (size_t k = 0; k < n && !stop.load(std::memory_order_relaxed); ++k) try_grow(k, 1);
   });
   for (size_t k = 0; k < n; ++k) {
     ensure_grown(k);

@@ -15,6 +15,7 @@
 // depend on (seed, strip, step) only: the result is bit-identical for any thread count.
 #pragma once
 
+#include <cassert>
 #include <functional>
 #include <vector>
 
@@ -114,9 +115,10 @@ class StripModel {
   void init_strip(size_t j);
   // One strip's share of a step before the sweep reaches it: the previous step's hardening
   // and plasticity if owed, growth, equilibrium and the scan (strip_advance.cpp).
-  void advance_strip(size_t j);
-  void advance_settled(size_t j);
-  void grow_strip(size_t j);
+  // `grower`: 0 for the sweep's thread, 1 for the helper (whose Inglis sums it adds to).
+  void advance_strip(size_t j, int grower);
+  void advance_settled(size_t j, int grower);
+  void grow_strip(size_t j, int grower);
   // Homogeneous growth of strip j's substrate metric by g.
   void scale_metric(size_t j, double g);
   void update_attachment(size_t j);
@@ -129,7 +131,7 @@ class StripModel {
   void propagate_from(size_t j);
   double centre_theta(size_t j, size_t element) const;
   void refracture(size_t j, int step);
-  void plasticity(size_t j, double growth = 1.0);
+  void plasticity(size_t j, int grower, double growth = 1.0);
   double width_factor(size_t j, double theta) const;
 
   StripDomain domain_;
@@ -149,7 +151,22 @@ class StripModel {
   // Per fracture id (valid at roots): number of fracture elements and their summed width,
   // for the Inglis ratio; kept up to date through one step's sweep.
   std::vector<double> fracture_count_, fracture_width_;
-  std::vector<double> upper_count_, upper_width_;  // measure_fractures(): the upper half's sums
+  // Per grower (0: the sweep's thread, 1: the helper; settle() uses 0): the fracture elements'
+  // number and summed width per fracture id as strips settle (plasticity), for the next
+  // measure_fractures(). Integers (widths in units of 2^-50 m), so that the totals do not depend
+  // on which thread settled which strip; sized to the ids at the last measure, which are all a
+  // strip being settled can hold.
+  struct InglisSums {
+    std::vector<int64_t> width;
+    std::vector<int32_t> count;
+    void add(int32_t id, double w) {
+      assert(id >= 0 && size_t(id) < width.size());
+      width[size_t(id)] += int64_t(w * 0x1p50 + 0.5);  // w >= 0
+      count[size_t(id)] += 1;
+    }
+  };
+  InglisSums sums_[2];
+  std::vector<int64_t> root_width_;  // measure_fractures(): scratch
   int step_ = 0;
   bool check_ = false;
   std::vector<double> residual_;  // per strip, when check_
@@ -165,10 +182,9 @@ class StripModel {
   std::vector<std::vector<FreeEnd>> tips_;
   // Per strip: element index of each fracture record (kept current by break_element).
   std::vector<std::vector<int32_t>> element_of_;
-  // Per strip, for the Inglis ratios: (fracture id, width) of the fracture elements as the
-  // strip was last settled (plasticity, normally when this step grew it: the previous step's
-  // widths) and of those born since, at birth. measure_fractures() sums them by fracture.
-  std::vector<std::vector<std::pair<int32_t, double>>> widths_, born_;
+  // Per strip, for the Inglis ratios: (fracture id, width) of the fracture elements born since
+  // the last measure, at birth (those settled since are in sums_). measure_fractures() sums them.
+  std::vector<std::vector<std::pair<int32_t, double>>> born_;
   bool sharp(int32_t id) const;
   // One free side of a fracture end about to propagate (sec. 3.2.4), and where it would cut
   // its neighbour strip (aim()).
