@@ -53,17 +53,21 @@ void factor_cyclic(const Strip& s, EquilibriumFactor& f) {
     if (j == n - 1) d -= alpha * beta / gamma;
     return d;
   };
-  f.u[0] = gamma;
-  f.u[n - 1] = alpha;
-  f.inv[0] = 1.0 / diag(0);
-  f.cprime[0] = -k(0) * f.inv[0];
-  f.u[0] *= f.inv[0];
-  for (size_t i = 1; i < n; ++i) {
+  const size_t first = std::min(f.kept, n - 1);  // row 0 and the last row depend on γ
+  if (first == 0) {
+    f.inv[0] = 1.0 / diag(0);
+    f.cprime[0] = -k(0) * f.inv[0];
+  }
+  for (size_t i = std::max<size_t>(first, 1); i < n; ++i) {
     const double l = -k(i - 1);  // symmetric: sub-diagonal equals the super-diagonal
     f.inv[i] = 1.0 / (diag(i) - l * f.cprime[i - 1]);
     f.cprime[i] = -k(i) * f.inv[i];
-    f.u[i] = (f.u[i] - l * f.u[i - 1]) * f.inv[i];
   }
+  f.kept = 0;
+  f.u[0] = gamma;
+  f.u[n - 1] = alpha;
+  f.u[0] *= f.inv[0];
+  for (size_t i = 1; i < n; ++i) f.u[i] = (f.u[i] - -k(i - 1) * f.u[i - 1]) * f.inv[i];
   for (size_t i = n - 1; i-- > 0;) f.u[i] -= f.cprime[i] * f.u[i + 1];
   f.denominator = 1.0 + f.u[0] + beta * f.u[n - 1] / gamma;
 }
@@ -109,9 +113,7 @@ double anchor_tension(const Strip& s, size_t i) {
 bool solve_special_case(Strip& s) {
   const size_t n = s.size();
   if (n == 0) return true;
-  bool attached = false;
-  for (double a : s.attach) attached |= a > 0;
-  if (!attached) {
+  if (std::none_of(s.attach.begin(), s.attach.end(), [](double a) { return a > 0; })) {
     solve_uniform_tension(s);
     return true;
   }
@@ -140,6 +142,7 @@ void ensure_factor(const Strip& s, EquilibriumFactor& f, bool keep) {
   else
     factor_open(s, f);
   f.valid = keep;
+  f.kept = 0;
 }
 
 // The right-hand side in displacements u_j = x_j - a_j (better conditioned than x): the

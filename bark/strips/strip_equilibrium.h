@@ -18,6 +18,10 @@ struct EquilibriumFactor {
   std::vector<double> u;            // cyclic strips: A'^-1 u of Sherman–Morrison
   double denominator = 0;           // cyclic strips: 1 + vᵀ A'^-1 u
   bool valid = false;
+  // When not valid: rows [0, kept) of a cyclic strip's inv and cprime still hold (their
+  // elements and attachment did not change, e.g. before a break further along the strip), so
+  // elimination resumes there; the Sherman–Morrison vector is redone in full.
+  size_t kept = 0;
 };
 
 // Moves the nodes of `strip` to the exact equilibrium of its elements and attachment springs

@@ -191,17 +191,20 @@ void StripModel::update_attachment(size_t j) {
   Strip& s = strips_[j];
   const size_t n = s.size(), nodes = s.nodes();
   factors_[j].valid = false;  // called whenever elements change
+  factors_[j].kept = 0;
   s.attach.assign(nodes, 0.0);
   if (params_.attachment <= 0) return;
-  const double k = params_.attachment / params_.element_length;
   for (size_t i = 0; i < n; ++i) {
-    const Element& e = s.elements[i];
-    if (e.kind != ElementKind::Epidermis) continue;
-    const double a = 0.5 * k * e.rest * e.width_factor;
+    const double a = attachment_share(s.elements[i]);
     s.attach[i] += a;
     s.attach[(i + 1) % nodes] += a;
   }
   if (!s.cyclic) s.attach.front() = s.attach.back() = 0;  // fixed ends
+}
+
+double StripModel::attachment_share(const Element& e) const {
+  // Half of an epidermis element's springs (sec. 5.1), held by each of its two nodes.
+  return e.kind == ElementKind::Epidermis ? 0.5 * (params_.attachment / params_.element_length) * e.rest * e.width_factor : 0.0;
 }
 
 void StripModel::settle() {
