@@ -66,6 +66,7 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   for (FreeEnd& t : tips_[j])
     if (size_t(t.element) > i) t.element += 2;
   tips_[j].push_back({frac.fracture, int32_t(i) + 1});
+  touched_[j] = 1;
   for (int32_t& k : element_of_[j])
     if (size_t(k) > i) k += 2;
   element_of_[j].push_back(int32_t(i) + 1);

@@ -178,16 +178,24 @@ void StripModel::propagate_from(size_t j) {
   // or links (breaks and links go to the neighbours), so the list holds through the loop.
   std::vector<PropagationSide>& sides = sides_;
   sides.clear();
-  for (const FreeEnd& f : tips_[j]) {
+  const bool fresh = !touched_[j];
+  for (const FreeEnd& listed : tips_[j]) {
     // Listed fracture elements stay fracture elements through the sweep (hardening waits).
-    const Element& e = strips_[j].elements[size_t(f.element)];
-    if (!e.free_end() || !sharp(e.id)) continue;
-    const double theta = centre_theta(j, size_t(f.element));
+    FreeEnd f = listed;
+    if (!fresh) {  // the copies may be stale: read the element
+      const Element& e = strips_[j].elements[size_t(f.element)];
+      f.id = e.id;
+      f.up_free = e.up < 0;
+      f.down_free = e.down < 0;
+    }
+    if (!(f.up_free || f.down_free) || !sharp(f.id)) continue;
+    const double theta = fresh ? f.theta : centre_theta(j, size_t(f.element));
     for (bool up : {true, false}) {
-      if ((up ? e.up : e.down) >= 0) continue;
+      if (!(up ? f.up_free : f.down_free)) continue;
       PropagationSide side;
       side.tip = size_t(f.element);
       side.fe = f.fracture;
+      side.id = f.id;
       side.up = up;
       side.theta = theta;
       side.jitter = jitter * rng.symmetric();  // drawn for every side: stable streams
@@ -202,10 +210,9 @@ void StripModel::propagate_from(size_t j) {
     if (side.target != SIZE_MAX) aim(j, side);
   bool changed_up = false, changed_down = false;
   for (PropagationSide& side : sides) {
-    const Element& src = strips_[j].elements[side.tip];
     // Tested again: a merge earlier in this loop may have changed the fracture.
-    if (!sharp(src.id)) continue;
-    const size_t root = size_t(skeleton_.find(src.id));
+    if (!sharp(side.id)) continue;
+    const size_t root = size_t(skeleton_.find(side.id));
     if (side.up ? up_strip < 0 : down_strip < 0) {
       exits_.push_back({int(j), side.up, side.theta});
       continue;
@@ -239,14 +246,14 @@ void StripModel::propagate_from(size_t j) {
       if (!break_element(ts, i, L > 0 ? off / L : 0.5, &g)) continue;
       breaks_[ts] = before;  // a propagation, not a new fracture
       FractureElement& ng = st.fractures[size_t(g)];
-      ng.id = src.id;
+      ng.id = side.id;
       i_target = i + 1;
-      st.elements[i_target].id = src.id;
+      st.elements[i_target].id = side.id;
       ++stats_.propagated;
-      const size_t r = size_t(skeleton_.find(src.id));
+      const size_t r = size_t(skeleton_.find(side.id));
       fracture_count_[r] += 1;
       fracture_width_[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
-      born_[ts].emplace_back(src.id, st.length(i + 1));
+      born_[ts].emplace_back(side.id, st.length(i + 1));
     }
     // Link both ways, in the fracture records and their copies in the elements.
     FractureElement& src2 = strips_[j].fractures[size_t(side.fe)];
@@ -257,6 +264,7 @@ void StripModel::propagate_from(size_t j) {
     if ((side.up ? ge2.down : ge2.up) < 0) (side.up ? ge2.down : ge2.up) = (side.up ? ge_e.down : ge_e.up) = side.fe;
     // The target strip changed (a break moves its elements, a link its back links): later
     // sides aimed at it are aimed again. (Both neighbours are one strip when there are two.)
+    touched_[ts] = 1;
     changed_up |= long(ts) == up_strip;
     changed_down |= long(ts) == down_strip;
   }

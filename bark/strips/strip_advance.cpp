@@ -105,7 +105,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
     if (e[i].kind == ElementKind::Epidermis)
       over |= length > e[i].rest * e[i].threshold;
     else {
-      if (e[i].free_end()) tips.push_back({e[i].fracture, int32_t(i)});
+      if (e[i].free_end()) tips.push_back(free_end(j, e[i], i, x[i], length));
       if (e[i].id >= 0) sums.add(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
     }
   };
@@ -116,6 +116,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   }
   scan(n - 1, x[0] + c_new - x[n - 1]);
   over_[j] = over;
+  touched_[j] = 0;
 }
 
 }  // namespace phellem::bark

@@ -34,6 +34,7 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   pending_.assign(n, 0);
   uniform_.assign(n, 0);
   tips_.resize(n);
+  touched_.assign(n, 0);
   element_of_.resize(n);
   born_.resize(n);
   factors_.resize(n);
@@ -102,8 +103,10 @@ Eigen::Vector2d StripModel::surface_uv(size_t j, double theta) const {
 }
 
 double StripModel::x_of(size_t j, double theta) const {
+  // (A uniform strip's total, cum_[j].back(), is its circumference, which sits with the
+  // strip's other fields the caller reads anyway.)
+  if (uniform_[j]) return theta / kTwoPi * strips_[j].circumference;
   const auto& c = cum_[j];
-  if (uniform_[j]) return theta / kTwoPi * c.back();
   const int m = int(c.size()) - 1;
   const double turns = std::floor(theta / kTwoPi);
   const double u = (theta / kTwoPi - turns) * m;
@@ -112,8 +115,8 @@ double StripModel::x_of(size_t j, double theta) const {
 }
 
 double StripModel::theta_of(size_t j, double x) const {
+  if (uniform_[j]) return kTwoPi * (x / strips_[j].circumference);
   const auto& c = cum_[j];
-  if (uniform_[j]) return kTwoPi * (x / c.back());
   const int m = int(c.size()) - 1;
   const double C = c[size_t(m)];
   const double turns = std::floor(x / C);
@@ -264,6 +267,11 @@ void StripModel::grow_strip(size_t j, int grower) {
   }
 }
 
+StripModel::FreeEnd StripModel::free_end(size_t j, const Element& e, size_t i, double left, double length) const {
+  // θ as centre_theta() computes it from the same positions.
+  return {e.fracture, int32_t(i), e.id, e.up < 0, e.down < 0, theta_of(j, left + 0.5 * length)};
+}
+
 void StripModel::scan_strip(size_t j) {
   // Which strips need the break loop, and the free ends propagation will look at.
   const Strip& s = strips_[j];
@@ -278,9 +286,10 @@ void StripModel::scan_strip(size_t j) {
     if (e.kind == ElementKind::Epidermis) {
       over |= length > e.rest * e.threshold;
     } else if (e.free_end()) {  // a fracture element is always active (hardening makes it epidermis)
-      tips.push_back({e.fracture, int32_t(i)});
+      tips.push_back(free_end(j, e, i, x[i], length));
     }
   }
+  touched_[j] = 0;
   over_[j] = over;
 }
 

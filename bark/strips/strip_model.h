@@ -175,12 +175,20 @@ class StripModel {
   std::vector<char> over_;                   // per strip: an element exceeded its threshold after growth
   std::vector<char> pending_;                // per strip: the last step's hardening and plasticity are owed
   // Per strip: fracture elements with a free end this step and their element index (kept
-  // current by break_element, the only place elements are inserted during the sweep).
+  // current by break_element, the only place elements are inserted during the sweep), with
+  // what propagation reads of them as the scan saw them: the sweep reads this list rather than
+  // the elements, which another thread just wrote, unless the strip was touched since.
   struct FreeEnd {
     int32_t fracture;
     int32_t element;
+    int32_t id = -1;
+    bool up_free = true, down_free = true;
+    double theta = 0;  // centre_theta() at the scan
   };
   std::vector<std::vector<FreeEnd>> tips_;
+  // Per strip: broken or linked into since its scan (its FreeEnd copies are then stale).
+  std::vector<char> touched_;
+  FreeEnd free_end(size_t j, const Element& e, size_t i, double left, double length) const;
   // Per strip: element index of each fracture record (kept current by break_element).
   std::vector<std::vector<int32_t>> element_of_;
   // Per strip, for the Inglis ratios: (fracture id, width) of the fracture elements born since
@@ -192,6 +200,7 @@ class StripModel {
   struct PropagationSide {
     size_t tip = 0;          // fracture element (index in its strip)
     int32_t fe = -1;         // its fracture record
+    int32_t id = -1;         // its fracture id
     bool up = true;          // towards the next strip (s+), else the previous
     double theta = 0;        // final-shape angle of the tip
     double jitter = 0;       // random angle added to the direction (radians)
