@@ -322,6 +322,13 @@ void StripModel::plasticity(size_t j, int grower, double growth) {
   if (refactor) factors_[j].valid = false;
 }
 
+void StripModel::prefetch_positions(size_t j) const {
+  // The sweep is about to aim free ends at strip j, which the helper grew on the other core:
+  // ask for its positions (where element_at() searches) all at once.
+  const std::vector<double>& x = strips_[j].x;
+  for (size_t i = 0; i < x.size(); i += 8) __builtin_prefetch(&x[i]);
+}
+
 void StripModel::step() {
   if (step_ >= params_.steps) return;
   const size_t n = strips_.size();
@@ -362,7 +369,10 @@ void StripModel::step() {
   });
   for (size_t k = 0; k < n; ++k) {
     ensure_grown(k);
-    if (k + 1 < n) ensure_grown(k + 1);
+    if (k + 1 < n) {
+      ensure_grown(k + 1);
+      prefetch_positions(strip_at(k + 1));
+    }
     const size_t j = strip_at(k);
     break_strip(j);
     if (breaks_[j] > 0) assign_new_fracture_ids(j);

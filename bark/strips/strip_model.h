@@ -217,6 +217,7 @@ class StripModel {
   void aim(size_t j, PropagationSide& side) const;
   std::vector<PropagationSide> sides_;  // the sweep's scratch list in propagate_from
   void scan_strip(size_t j);
+  void prefetch_positions(size_t j) const;
   void solve(size_t j);
 };
 
