@@ -39,8 +39,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   const size_t n = s.size();
   const double g = params_.growth_rate;
   const double c_old = s.circumference;
-  scale_metric(j, g);
-  const double c_new = cum_[j].back();
+  const double c_new = scale_metric(j, g);
   double* x = s.x.data();
   double* a = s.anchor.data();
   Element* e = s.elements.data();

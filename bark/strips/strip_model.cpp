@@ -103,8 +103,7 @@ Eigen::Vector2d StripModel::surface_uv(size_t j, double theta) const {
 }
 
 double StripModel::x_of(size_t j, double theta) const {
-  // (A uniform strip's total, cum_[j].back(), is its circumference, which sits with the
-  // strip's other fields the caller reads anyway.)
+  // A uniform strip maps through its circumference alone (its cumulative table is not kept).
   if (uniform_[j]) return theta / kTwoPi * strips_[j].circumference;
   const auto& c = cum_[j];
   const int m = int(c.size()) - 1;
@@ -227,12 +226,12 @@ void StripModel::settle() {
   }
 }
 
-void StripModel::scale_metric(size_t j, double g) {
+double StripModel::scale_metric(size_t j, double g) {
+  // θ ∝ x on a uniform strip: its circumference is all there is (its table is not kept).
+  if (uniform_[j]) return strips_[j].circumference * g;
   auto& c = cum_[j];
-  if (uniform_[j])
-    c.back() *= g;  // θ ∝ x: only the total is used
-  else
-    for (double& v : c) v *= g;
+  for (double& v : c) v *= g;
+  return c.back();
 }
 
 void StripModel::grow_strip(size_t j, int grower) {
@@ -248,7 +247,7 @@ void StripModel::grow_strip(size_t j, int grower) {
       plasticity(j, grower, g);  // in the old metric; the new anchors come out grown
     else
       for (double& a : s.anchor) a *= g;
-    scale_metric(j, g);
+    s.circumference = scale_metric(j, g);
   } else {
     if (pending_[j]) plasticity(j, grower);
     std::vector<double> theta(s.anchor.size());
@@ -258,9 +257,9 @@ void StripModel::grow_strip(size_t j, int grower) {
     for (size_t k = 0; k + 1 < c.size(); ++k) next[k + 1] = next[k] + (c[k + 1] - c[k]) * std::exp(lg * m.exponent[k]);
     c.swap(next);
     for (size_t i = 0; i < theta.size(); ++i) s.anchor[i] = x_of(j, theta[i]);
+    s.circumference = c.back();
   }
   pending_[j] = 0;
-  s.circumference = c.back();
   if (!s.cyclic) {  // the solve moves every free node; open strips keep their ends on the substrate
     s.x.front() = 0;
     s.x.back() = s.circumference;

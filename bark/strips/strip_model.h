@@ -120,7 +120,8 @@ class StripModel {
   void advance_settled(size_t j, int grower);
   void grow_strip(size_t j, int grower);
   // Homogeneous growth of strip j's substrate metric by g.
-  void scale_metric(size_t j, double g);
+  // Returns the new circumference; does not set it.
+  double scale_metric(size_t j, double g);
   void update_attachment(size_t j);
   double attachment_share(const Element& e) const;
   void break_strip(size_t j);
@@ -139,7 +140,7 @@ class StripModel {
   StripParams params_;
   std::vector<Strip> strips_;
   std::vector<std::vector<double>> cum_;  // per strip: #M+1 cumulative substrate arc length now
-  std::vector<char> uniform_;             // per strip: all bins alike and no dilatation (θ ∝ x; only cum_.back() kept current)
+  std::vector<char> uniform_;             // per strip: all bins alike and no dilatation (θ ∝ x through the circumference; cum_ not kept current)
   std::vector<double> epidermis0_;       // per strip: original epidermis length E0
   // Per strip, for the current step: breaks (created + scripted), scripted breaks, hardened
   // fracture elements. Summed into stats_ after the parallel phases.
