@@ -95,8 +95,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   // any epidermis element beyond its threshold, which fracture elements have a free end, and
   // the fracture widths (their rest lengths since pass 1) for the Inglis ratios.
   const double beta = -e[n - 1].stiffness;
-  const double gamma = -(e[n - 1].stiffness + e[0].stiffness + s.attach[0]);
-  const double fact = (r[0] + beta * r[n - 1] / gamma) / f.denominator;
+  const double fact = (r[0] + beta * r[n - 1] / f.gamma) / f.denominator;
   std::vector<FreeEnd>& tips = tips_[j];
   tips.clear();
   bool over = false;

@@ -70,6 +70,7 @@ void factor_cyclic(const Strip& s, EquilibriumFactor& f) {
   for (size_t i = 1; i < n; ++i) f.u[i] = (f.u[i] - -k(i - 1) * f.u[i - 1]) * f.inv[i];
   for (size_t i = n - 1; i-- > 0;) f.u[i] -= f.cprime[i] * f.u[i + 1];
   f.denominator = 1.0 + f.u[0] + beta * f.u[n - 1] / gamma;
+  f.gamma = gamma;
 }
 
 // Eliminates the open strip's matrix over the free nodes 1..n-1 (row r = node r + 1).

@@ -17,6 +17,7 @@ struct EquilibriumFactor {
   std::vector<double> inv, cprime;  // 1 / pivot and the eliminated super-diagonal
   std::vector<double> u;            // cyclic strips: A'^-1 u of Sherman–Morrison
   double denominator = 0;           // cyclic strips: 1 + vᵀ A'^-1 u
+  double gamma = 0;                 // cyclic strips: γ = -A[0][0]
   bool valid = false;
   // When not valid: rows [0, kept) of a cyclic strip's inv and cprime still hold (their
   // elements and attachment did not change, e.g. before a break further along the strip), so
