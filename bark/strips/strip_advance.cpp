@@ -37,6 +37,15 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   Strip& s = strips_[j];
   const EquilibriumFactor& f = factors_[j];
   const size_t n = s.size();
+  // Each array of the strip is an allocation of its own, last touched a step ago: ask for
+  // the first lines of all of them at once (the loop below fetches ahead from there), and
+  // for the free-end list pass 3 writes.
+  for (const double* v : {s.x.data(), s.anchor.data()}) __builtin_prefetch(v);
+  for (const double* v : {f.inv.data(), f.cprime.data(), f.u.data()}) __builtin_prefetch(v);
+  for (size_t i = 0; i < std::min<size_t>(n, 4); ++i) __builtin_prefetch(&s.elements[i]);
+  __builtin_prefetch(&s.elements[n - 1]);
+  __builtin_prefetch(&s.x[n - 1]);
+  __builtin_prefetch(tips_[j].data(), 1);
   const double g = params_.growth_rate;
   const double c_old = s.circumference;
   const double c_new = scale_metric(j, g);
