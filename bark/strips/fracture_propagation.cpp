@@ -43,7 +43,7 @@ void StripModel::measure_fractures() {
     fracture_count_[r] += double(sums_[0].count[id] + sums_[1].count[id]);
     root_width_[r] += sums_[0].width[id] + sums_[1].width[id];
   }
-  for (size_t r = 0; r < ids; ++r) fracture_width_[r] = double(root_width_[r]) * 0x1p-50;
+  for (size_t r = 0; r < ids; ++r) fracture_width_[r] = double(root_width_[r]) * 0x1p-40;
   for (auto& born : born_) {
     for (const auto& [id, w] : born) {
       const size_t r = size_t(skeleton_.compressed_root(id));

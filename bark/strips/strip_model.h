@@ -155,15 +155,16 @@ class StripModel {
   std::vector<double> fracture_count_, fracture_width_;
   // Per grower (0: the sweep's thread, 1: the helper; settle() uses 0): the fracture elements'
   // number and summed width per fracture id as strips settle (plasticity), for the next
-  // measure_fractures(). Integers (widths in units of 2^-50 m), so that the totals do not depend
-  // on which thread settled which strip; sized to the ids at the last measure, which are all a
+  // measure_fractures(). Integers (widths in units of 2^-40 m, ~1e-12 m: a model's fractures can
+  // hold 8·10^6 m of width in all before a sum overflows), so that the totals do not depend on
+  // which thread settled which strip; sized to the ids at the last measure, which are all a
   // strip being settled can hold.
   struct InglisSums {
     std::vector<int64_t> width;
     std::vector<int32_t> count;
     void add(int32_t id, double w) {
       assert(id >= 0 && size_t(id) < width.size());
-      width[size_t(id)] += int64_t(w * 0x1p50 + 0.5);  // w >= 0
+      width[size_t(id)] += int64_t(w * 0x1p40 + 0.5);  // w >= 0
       count[size_t(id)] += 1;
     }
   };
