@@ -46,21 +46,21 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   s.x.insert(s.x.begin() + long(i) + 1, {xb, xb});
   s.anchor.insert(s.anchor.begin() + long(i) + 1, {xb, xb});
   const bool eliminated = factors_[j].valid;
-  if (s.cyclic && params_.attachment > 0 && i + 3 < s.size()) {
+  const bool inside = s.cyclic && i + 3 < s.size();  // not the last element of a cyclic strip
+  if (inside && params_.attachment > 0) {
     // Only nodes i..i+3 change: each holds the shares of the elements either side (the sums
-    // are those update_attachment makes).
+    // update_attachment makes).
     s.attach.insert(s.attach.begin() + long(i) + 1, {0.0, 0.0});
     for (size_t node = i; node <= i + 3; ++node)
       s.attach[node] = attachment_share(s.elements[node == 0 ? s.size() - 1 : node - 1]) + attachment_share(s.elements[node]);
-    factors_[j].valid = false;
-    factors_[j].kept = 0;
   } else {
     update_attachment(j);
   }
   // Rows before node i of the eliminated matrix are unchanged (elements and attachment before
   // element i are), unless the break is at either end of a cyclic strip (rows 0 and n-1 hold
   // its corners).
-  if (eliminated && s.cyclic && i > 0 && i + 3 < s.size()) factors_[j].kept = i;
+  factors_[j].valid = false;
+  factors_[j].kept = eliminated && inside && i > 0 ? i : 0;
   solve(j);
   ++breaks_[j];
   for (FreeEnd& t : tips_[j])
