@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 
 #include <Eigen/Dense>
+#include <map>
 #include <random>
 
 #include "bark/geometry/generalized_cylinder.h"
@@ -229,6 +230,37 @@ TEST(StripModel, SettlingBetweenStepsChangesNoLaterResult) {
       if (s.elements[i].kind != ElementKind::Fracture) continue;
       EXPECT_LE(s.length(i), p.refracture_width);
     }
+}
+
+TEST(StripModel, InglisMeasureCountsEveryFractureElementOnce) {
+  // After each step, a fracture's count is the number of its elements in the strips, whichever
+  // thread settled them (the widths are summed in integers by fracture id as strips settle),
+  // and its summed width is positive and below the strips' total circumference.
+  for (int threads : {1, 2}) {
+    tbb::global_control c(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    StripParams p = small_params();
+    p.steps = 60;
+    StripModel m(flat_domain(0.3, 0.3, p), p);
+    size_t checked = 0;
+    for (int step = 0; step + 1 < p.steps; ++step) {  // the last step also settles
+      m.step();
+      std::map<int32_t, double> count;
+      double total = 0;
+      for (const Strip& s : m.strips()) {
+        total += s.circumference;
+        for (const Element& e : s.elements)
+          if (e.kind == ElementKind::Fracture) count[m.skeleton().find(s.fractures[size_t(e.fracture)].id)] += 1;
+      }
+      for (const auto& [root, n] : count) {
+        const auto [measured, width] = m.inglis_measure(root);
+        ASSERT_EQ(measured, n) << "fracture " << root << " after step " << step << ", " << threads << " threads";
+        EXPECT_GT(width, 0.0);
+        EXPECT_LT(width, total);
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, 100u);
+  }
 }
 
 TEST(StripModel, BitIdenticalForAnyThreadCountAndSeedDependent) {

@@ -101,6 +101,13 @@ class StripModel {
   void set_check_equilibrium(bool on) { check_ = on; }
   double max_residual() const;
 
+  // The Inglis measure of fracture `id`'s component as the sweep sees it: its number of
+  // fracture elements (exact) and their summed width (as measured at the end of the last step,
+  // then kept up to date through the sweep).
+  std::pair<double, double> inglis_measure(int32_t id) const {
+    const size_t root = size_t(skeleton_.find(id));
+    return root < fracture_count_.size() ? std::pair{fracture_count_[root], fracture_width_[root]} : std::pair{0.0, 0.0};
+  }
   // Sharp free ends on strips [first, last) in the current state.
   std::vector<FractureTip> sharp_tips(size_t first, size_t last) const;
   // A fracture arriving from another cylinder (a tree's branching, sec. 5.3 / Figure 20): it
