@@ -7,6 +7,7 @@
 // instead of six; it computes exactly what the general path (plasticity, grow_strip, solve,
 // scan_strip) computes, in the same order, so the bits are the same.
 #include <algorithm>
+#include <initializer_list>
 
 #include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip_model.h"
@@ -40,8 +41,8 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   // Each array of the strip is an allocation of its own, last touched a step ago: ask for
   // the first lines of all of them at once (the loop below fetches ahead from there), and
   // for the free-end list pass 3 writes.
-  for (const double* v : {s.x.data(), s.anchor.data()}) __builtin_prefetch(v);
-  for (const double* v : {f.inv.data(), f.cprime.data(), f.u.data()}) __builtin_prefetch(v);
+  for (const double* v : std::initializer_list<const double*>{s.x.data(), s.anchor.data(), f.inv.data(), f.cprime.data(), f.u.data()})
+    __builtin_prefetch(v);
   for (size_t i = 0; i < std::min<size_t>(n, 4); ++i) __builtin_prefetch(&s.elements[i]);
   __builtin_prefetch(&s.elements[n - 1]);
   __builtin_prefetch(&s.x[n - 1]);
@@ -94,7 +95,6 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
     prev = t;
   }
   a[n - 1] = a_last;
-  s.circumference = c_new;
   r[n - 1] = p = forward_row(t_last - prev, e[n - 2].stiffness, inv[n - 1], p);
 
   // Pass 2: back substitution.

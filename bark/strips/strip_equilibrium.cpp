@@ -63,7 +63,6 @@ void factor_cyclic(const Strip& s, EquilibriumFactor& f) {
     f.inv[i] = 1.0 / (diag(i) - l * f.cprime[i - 1]);
     f.cprime[i] = -k(i) * f.inv[i];
   }
-  f.kept = 0;
   f.u[0] = gamma;
   f.u[n - 1] = alpha;
   f.u[0] *= f.inv[0];

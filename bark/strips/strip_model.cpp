@@ -211,9 +211,8 @@ double StripModel::attachment_share(const Element& e) const {
 
 void StripModel::settle() {
   // The end of the last step's Figure 8 for every strip that owes it (nothing has touched
-  // them since).
-  // In strip order on this thread: the Inglis sums it adds to are the sweep's (one step's worth
-  // of plasticity, not worth a second accumulator set).
+  // them since), in strip order on this thread: it adds to the sweep's Inglis sums (one step's
+  // worth of plasticity is not worth a second set).
   for (size_t j = 0; j < strips_.size(); ++j) {
     if (!pending_[j]) continue;
     refracture(j, step_ - 1);
@@ -228,10 +227,14 @@ void StripModel::settle() {
 
 double StripModel::scale_metric(size_t j, double g) {
   // θ ∝ x on a uniform strip: its circumference is all there is (its table is not kept).
-  if (uniform_[j]) return strips_[j].circumference * g;
-  auto& c = cum_[j];
-  for (double& v : c) v *= g;
-  return c.back();
+  Strip& s = strips_[j];
+  if (uniform_[j]) {
+    s.circumference *= g;
+  } else {
+    for (double& v : cum_[j]) v *= g;
+    s.circumference = cum_[j].back();
+  }
+  return s.circumference;
 }
 
 void StripModel::grow_strip(size_t j, int grower) {
@@ -247,7 +250,7 @@ void StripModel::grow_strip(size_t j, int grower) {
       plasticity(j, grower, g);  // in the old metric; the new anchors come out grown
     else
       for (double& a : s.anchor) a *= g;
-    s.circumference = scale_metric(j, g);
+    scale_metric(j, g);
   } else {
     if (pending_[j]) plasticity(j, grower);
     std::vector<double> theta(s.anchor.size());
@@ -295,7 +298,7 @@ void StripModel::scan_strip(size_t j) {
 void StripModel::plasticity(size_t j, int grower, double growth) {
   // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
   // material fills the fractures, whose rest length becomes their current width.
-  // Also lists each fracture element's (fracture, width) for the next step's Inglis ratios.
+  // Also adds each fracture element's width to the grower's Inglis sums by fracture id.
   // `growth`: the next step's homogeneous growth applied to the new anchors in the same pass.
   Strip& s = strips_[j];
   const size_t n = s.size();

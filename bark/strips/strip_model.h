@@ -126,8 +126,8 @@ class StripModel {
   void advance_strip(size_t j, int grower);
   void advance_settled(size_t j, int grower);
   void grow_strip(size_t j, int grower);
-  // Homogeneous growth of strip j's substrate metric by g.
-  // Returns the new circumference; does not set it.
+  // Homogeneous growth of strip j's substrate metric and circumference by g; returns the new
+  // circumference.
   double scale_metric(size_t j, double g);
   void update_attachment(size_t j);
   double attachment_share(const Element& e) const;
