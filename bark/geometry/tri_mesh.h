@@ -1,0 +1,21 @@
+// TriMesh: an indexed triangle mesh as it comes from a file or a tessellator (DESIGN.md,
+// bark/geometry): positions, optional per-vertex texture coordinates, triangles.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace phellem::bark {
+
+struct TriMesh {
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Vector2d> uvs;  // empty, or one per position
+  std::vector<std::array<uint32_t, 3>> triangles;
+
+  bool has_uvs() const { return !uvs.empty(); }
+  double area() const;
+};
+
+}  // namespace phellem::bark

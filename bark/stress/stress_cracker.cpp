@@ -1,0 +1,185 @@
+#include "bark/stress/stress_cracker.h"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+#include "bark/stress/crack_width.h"
+#include "bark/stress/separation_tensor.h"
+#include "bark/stress/stress_patterns.h"
+#include "bark/stress/stress_relaxation.h"
+#include "bark/strips/random.h"
+
+namespace phellem::bark {
+
+namespace {
+constexpr double kPi = 3.141592653589793;
+
+// Largest eigenvalue of a symmetric 3×3 tensor and its eigenvector.
+std::pair<double, Eigen::Vector3d> largest(const Eigen::Matrix3d& s) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(s);
+  return {es.eigenvalues()[2], es.eigenvectors().col(2)};
+}
+}  // namespace
+
+double CrackedMesh::crack_length() const {
+  double l = 0;
+  for (const auto& e : crack_edges) l += (mesh.positions[e[0]] - mesh.positions[e[1]]).norm();
+  return l;
+}
+
+StressCracker::StressCracker(StressMesh mesh, StressParams params) : mesh_(std::move(mesh)), params_(std::move(params)) {
+  if (auto e = validate(params_)) throw *e;
+  const SurfaceMesh& g = mesh_.mesh();
+  double mean_edge = 0;
+  for (EdgeId e : g.edges()) mean_edge += (mesh_.point(g.vertex(e, 0)) - mesh_.point(g.vertex(e, 1))).norm();
+  mean_edge /= double(std::max<size_t>(1, g.number_of_edges()));
+  tau_ = params_.threshold * std::max(std::abs(params_.magnitude), 1e-300) * mean_edge;
+  insert_.snap_angle = params_.snap_angle_deg * kPi / 180.0;
+  insert_.stress_alleviation = params_.stress_alleviation;
+  insert_.max_beta_sv = params_.kappa * mesh_.max_beta_singular_value();  // sec. 3.1.4
+  initialize_stress(mesh_, params_);
+}
+
+const StressStats& StressCracker::stats() const {
+  const SurfaceMesh& g = mesh_.mesh();
+  stats_.crack_edges = 0;
+  for (EdgeId e : g.edges()) stats_.crack_edges += mesh_.crack(e);
+  return stats_;
+}
+
+void StressCracker::apply_growth_hooks() {
+  // Woodification sec. 5: growth adds stress each step; curvature adds a term along the
+  // surface's principal curvature directions.
+  const bool growth = !params_.growth_increment.isZero(), curvature = params_.curvature_stress != 0;
+  if (!growth && !curvature) return;
+  SurfaceMesh& g = mesh_.mesh();
+  tbb::parallel_for(size_t(0), size_t(g.number_of_faces()), [&](size_t k) {
+    const FaceId f(static_cast<SurfaceMesh::size_type>(k));
+    FaceState& s = mesh_.face(f);
+    if (growth) {
+      const auto [h, v] = horizontal_vertical(s.normal);
+      Eigen::Matrix<double, 3, 2> HV;
+      HV << h, v;
+      const Eigen::Matrix<double, 2, 2> R = s.frame.transpose() * HV;  // (h, v) → local frame
+      s.sigma += R * params_.growth_increment * R.transpose();
+    }
+    if (curvature) s.sigma += params_.curvature_stress * face_curvature(mesh_, f);
+  });
+}
+
+void StressCracker::crack_step() {
+  SurfaceMesh& g = mesh_.mesh();
+  const size_t nv = g.number_of_vertices();
+  compute_forces(mesh_, forces_);
+  separation_.resize(nv);
+  residual_.resize(nv, Eigen::Matrix3d::Zero());
+  tbb::parallel_for(size_t(0), nv, [&](size_t k) {
+    const VertexId v(static_cast<SurfaceMesh::size_type>(k));
+    separation_[k] = separation_tensor(mesh_, forces_, v) + residual_[k];  // eq. 4 (+ eq. 6 from the last iteration)
+    residual_[k].setZero();
+  });
+  // Priority queue on the largest tensile eigenvalue (ties: lower vertex index first).
+  using Entry = std::pair<double, uint32_t>;
+  auto later = [](const Entry& a, const Entry& b) { return a.first < b.first || (a.first == b.first && a.second > b.second); };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
+  for (size_t k = 0; k < nv; ++k)
+    if (const double l = largest(separation_[k]).first; l > tau_) queue.emplace(l, uint32_t(k));
+  std::vector<char> cracked(nv, 0);
+  int made = 0;
+  StreamRng rng(params_.seed ^ 0x637261636bULL, uint64_t(stats_.iterations), 0);
+  while (!queue.empty() && made < params_.cracks_per_iteration) {
+    const auto [lambda, vi] = queue.top();
+    queue.pop();
+    if (cracked[vi]) continue;
+    const auto [l, n_plus] = largest(separation_[vi]);
+    if (l != lambda || !(l > tau_)) continue;  // stale entry
+    const VertexId v(vi);
+    // The crack runs perpendicular to the eigenvector, in the tangent plane, optionally
+    // rotated about the normal by a random angle.
+    const Eigen::Vector3d n_v = mesh_.vertex_normal(v);
+    Eigen::Vector3d dir = n_v.cross(n_plus);
+    const double jitter = params_.crack_rotation * 0.5 * kPi * rng.symmetric();
+    if (!(dir.norm() > 1e-9)) continue;  // ς pulls along the normal only: no in-surface crack
+    dir = Eigen::AngleAxisd(jitter, n_v) * dir.normalized();
+    const auto sides = insert_crack(mesh_, v, dir, insert_);
+    cracked[vi] = 1;
+    if (!sides[0].added && !sides[1].added) continue;
+    ++made;
+    ++stats_.cracks;
+    // New vertices: their separation tensor interpolates the split edge's ends.
+    const size_t n_now = g.number_of_vertices();
+    separation_.resize(n_now, Eigen::Matrix3d::Zero());
+    residual_.resize(n_now, Eigen::Matrix3d::Zero());
+    cracked.resize(n_now, 0);
+    // Eqs. 5–6: the surplus over τ, weighted by α, goes to the crack tips.
+    const Eigen::Matrix3d surplus = params_.alpha * (l - tau_) * n_plus * n_plus.transpose();
+    for (const CrackSide& s : sides) {
+      if (!s.added) continue;
+      stats_.snapped += s.snapped;
+      stats_.splits += s.split;
+      const size_t t = s.tip.idx();
+      if (s.split)
+        separation_[t] = (1 - s.split_t) * separation_[s.split_from.idx()] + s.split_t * separation_[s.split_to.idx()];
+      separation_[t] += surplus;
+      residual_[t] += surplus;
+      if (!cracked[t])
+        if (const double lt = largest(separation_[t]).first; lt > tau_) queue.emplace(lt, uint32_t(t));
+    }
+    residual_[vi].setZero();
+  }
+  // Residuals of tips that cracked this iteration are spent.
+  for (size_t k = 0; k < cracked.size(); ++k)
+    if (cracked[k]) residual_[k].setZero();
+}
+
+void StressCracker::iterate() {
+  apply_growth_hooks();
+  crack_step();
+  for (int r = 0; r < params_.relaxations_per_iteration; ++r) {
+    compute_forces(mesh_, forces_);
+    relax(mesh_, forces_, params_.time_step, &displacement_);
+  }
+  ++stats_.iterations;
+}
+
+void StressCracker::run(const std::function<void(int, int)>& progress) {
+  while (stats_.iterations < params_.iterations) {
+    iterate();
+    if (progress) progress(stats_.iterations, params_.iterations);
+  }
+}
+
+CrackedMesh StressCracker::result() const {
+  const SurfaceMesh& g = mesh_.mesh();
+  const size_t nv = g.number_of_vertices();
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  for (EdgeId e : g.edges())
+    if (mesh_.crack(e)) edges.emplace_back(g.vertex(e, 0).idx(), g.vertex(e, 1).idx());
+  const CrackGraph graph = CrackGraph::from_edges(nv, edges);
+  const std::vector<int32_t> comp = crack_components(graph), width = crack_widths(graph);
+  CrackedMesh out;
+  std::vector<VertexId> source;
+  out.mesh = mesh_.to_trimesh(&source);
+  // Crack edges between output vertices: a crack vertex split at a UV seam keeps one copy per
+  // side; the edge uses the copies of a face that holds it.
+  std::vector<std::vector<uint32_t>> copies(nv);
+  for (uint32_t k = 0; k < source.size(); ++k) copies[source[k].idx()].push_back(k);
+  for (const auto& [a, b] : edges) out.crack_edges.push_back({copies[a].front(), copies[b].front()});
+  out.crack_width.resize(source.size());
+  out.component.resize(source.size());
+  out.displacement.resize(source.size(), Eigen::Vector3f::Zero());
+  for (size_t k = 0; k < source.size(); ++k) {
+    const size_t v = source[k].idx();
+    out.crack_width[k] = float(width[v]);
+    out.component[k] = comp[v];
+    if (v < displacement_.size()) out.displacement[k] = displacement_[v].cast<float>();
+  }
+  return out;
+}
+
+}  // namespace phellem::bark

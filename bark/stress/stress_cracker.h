@@ -1,0 +1,67 @@
+// StressCracker: the stress-field surface cracking model on a triangle mesh (Spicker 2014
+// sec. 3, after Iben & O'Brien 2006; Figure 8): initialize the stress field, then each
+// iteration compute the forces and separation tensors (eqs. 1–4), crack the vertices whose
+// largest tensile eigenvalue exceeds τ (at most CPI, in order of that eigenvalue; eqs. 5–6,
+// sec. 3.2), and relax the stress RPI times (eqs. 7–9).
+//
+// Forces, separation tensors and relaxation run in parallel (TBB) with fixed summation
+// orders; cracking is sequential and its random draws depend on (seed, iteration, crack):
+// the result is bit-identical for any thread count.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+#include "bark/stress/crack_insertion.h"
+#include "bark/stress/cracked_mesh.h"
+#include "bark/stress/stress_forces.h"
+#include "bark/stress/stress_mesh.h"
+#include "bark/stress/stress_params.h"
+
+namespace phellem::bark {
+
+struct StressStats {
+  long long cracks = 0;          // crack events that added at least one crack edge
+  long long crack_edges = 0;     // edges marked as cracks now
+  long long snapped = 0;         // crack sides that snapped onto an existing edge
+  long long splits = 0;          // edges split by crack insertion
+  int iterations = 0;
+};
+
+class StressCracker {
+ public:
+  // Throws StressParamError for a parameter out of range.
+  StressCracker(StressMesh mesh, StressParams params);
+
+  void iterate();
+  // All remaining iterations; `progress(done, total)` after each.
+  void run(const std::function<void(int, int)>& progress = {});
+
+  const StressMesh& mesh() const { return mesh_; }
+  StressMesh& mesh() { return mesh_; }
+  const StressParams& params() const { return params_; }
+  const StressStats& stats() const;
+  // τ in force units: threshold × |magnitude| × the initial mean edge length.
+  double absolute_threshold() const { return tau_; }
+  // Separation tensors of the last force computation, per vertex (eq. 4, plus residuals).
+  const std::vector<Eigen::Matrix3d>& separation() const { return separation_; }
+
+  // Post-processing (sec. 3.1.6, 4.2): components, Algorithm 1 widths, virtual displacement.
+  CrackedMesh result() const;
+
+ private:
+  void apply_growth_hooks();
+  void crack_step();
+
+  StressMesh mesh_;
+  StressParams params_;
+  double tau_ = 0;
+  CrackInsertOptions insert_;
+  ForceField forces_;
+  std::vector<Eigen::Matrix3d> separation_, residual_;  // per vertex
+  std::vector<Eigen::Vector3d> displacement_;            // per vertex
+  mutable StressStats stats_;
+};
+
+}  // namespace phellem::bark

@@ -1,0 +1,218 @@
+// Stress-field cracking (Spicker 2014 sec. 3.1.3, 3.2, 3.3): crack insertion keeps the mesh
+// a valid oriented manifold with continuous UVs and no sliver without snapping; the stress
+// patterns steer the cracks; strokes crack along the stroke; determinism across thread
+// counts; malformed meshes are refused.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <Eigen/Geometry>
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#include <cmath>
+
+#include "bark/geometry/procedural_meshes.h"
+#include "bark/stress/crack_insertion.h"
+#include "bark/stress/stress_cracker.h"
+#include "bark/stress/stress_mesh.h"
+
+using namespace phellem::bark;
+
+namespace {
+
+constexpr double kPi = 3.141592653589793;
+
+// Angle of each crack edge from the +X axis folded into [0°, 90°] on a sheet in the XY plane,
+// weighted by length: returns the length fraction closer to vertical (> 45°).
+double vertical_fraction(const StressMesh& m) {
+  const SurfaceMesh& g = m.mesh();
+  double vert = 0, total = 0;
+  for (EdgeId e : g.edges()) {
+    if (!m.crack(e)) continue;
+    const Eigen::Vector3d d = m.point(g.vertex(e, 1)) - m.point(g.vertex(e, 0));
+    const double a = std::atan2(std::abs(d.y()), std::abs(d.x()));
+    total += d.norm();
+    if (a > kPi / 4) vert += d.norm();
+  }
+  return total > 0 ? vert / total : 0.5;
+}
+
+StressParams sheet_params(StressPattern pattern) {
+  StressParams p;
+  p.pattern = pattern;
+  p.iterations = 20;
+  p.cracks_per_iteration = 6;
+  p.relaxations_per_iteration = 1;
+  p.alpha = 0.3;
+  p.threshold = 0.4;
+  p.seed = 5;
+  return p;
+}
+
+}  // namespace
+
+TEST(CrackInsertion, KeepsAClosedMeshValidOrientedAndWatertight) {
+  StressMesh m = StressMesh::from(icosphere(3, 1.0));
+  const size_t v0 = m.mesh().number_of_vertices(), f0 = m.mesh().number_of_faces();
+  CrackInsertOptions o;
+  o.snap_angle = 10 * kPi / 180;
+  int k = 0;
+  for (VertexId v : std::vector<VertexId>(m.mesh().vertices().begin(), m.mesh().vertices().end())) {
+    if (k++ % 7) continue;
+    const Eigen::Vector3d n = m.point(v).normalized();
+    const Eigen::Vector3d dir = n.cross(Eigen::Vector3d(std::sin(k), std::cos(3 * k), 0.5).normalized());
+    insert_crack(m, v, dir, o);
+  }
+  const SurfaceMesh& g = m.mesh();
+  EXPECT_TRUE(g.is_valid(false));
+  EXPECT_GT(g.number_of_vertices(), v0);
+  EXPECT_GT(g.number_of_faces(), f0);
+  for (HalfedgeId h : g.halfedges()) EXPECT_FALSE(g.is_border(h));  // still closed
+  // Euler characteristic of a sphere, and every face still facing outwards.
+  EXPECT_EQ(long(g.number_of_vertices()) - long(g.number_of_edges()) + long(g.number_of_faces()), 2);
+  for (FaceId f : g.faces()) {
+    const auto vs = m.vertices(f);
+    const Eigen::Vector3d c = (m.point(vs[0]) + m.point(vs[1]) + m.point(vs[2])) / 3;
+    EXPECT_GT(m.face(f).normal.dot(c), 0.0);
+  }
+}
+
+TEST(CrackInsertion, NoSliverWithoutSnappingAndUVsStayContinuous) {
+  // A sheet whose UVs are a linear function of position: after cracking, every corner's UV
+  // must still be that function of its vertex (interpolated, not copied). No new face may have
+  // an angle below the snap angle unless it existed before (splits that would make one snap).
+  TriMesh sheet = jittered_sheet(10, 10, 1.0, 1.0, 0.25, 3);
+  StressMesh m = StressMesh::from(sheet);
+  double initial_min = kPi;
+  for (FaceId f : m.mesh().faces()) {
+    const auto vs = m.vertices(f);
+    initial_min = std::min(initial_min, min_angle(m.point(vs[0]), m.point(vs[1]), m.point(vs[2])));
+  }
+  CrackInsertOptions o;
+  o.snap_angle = std::min(12 * kPi / 180, initial_min);
+  int splits = 0, snaps = 0, k = 0;
+  for (VertexId v : std::vector<VertexId>(m.mesh().vertices().begin(), m.mesh().vertices().end())) {
+    const double a = 0.7 * k++;
+    for (const CrackSide& s : insert_crack(m, v, Eigen::Vector3d(std::cos(a), std::sin(a), 0), o)) {
+      splits += s.split;
+      snaps += s.snapped;
+    }
+  }
+  EXPECT_GT(splits, 20);
+  EXPECT_GT(snaps, 0);
+  const SurfaceMesh& g = m.mesh();
+  EXPECT_TRUE(g.is_valid(false));
+  for (FaceId f : g.faces()) {
+    const auto vs = m.vertices(f);
+    EXPECT_GE(min_angle(m.point(vs[0]), m.point(vs[1]), m.point(vs[2])), o.snap_angle * (1 - 1e-9));
+    EXPECT_GT(m.face(f).normal.z(), 0.0);
+    for (HalfedgeId h : CGAL::halfedges_around_face(g.halfedge(f), g)) {
+      const Eigen::Vector3d p = m.point(g.target(h));
+      EXPECT_NEAR(m.uv(h).x(), p.x(), 1e-12);
+      EXPECT_NEAR(m.uv(h).y(), p.y(), 1e-12);
+    }
+  }
+}
+
+TEST(StressCracker, HorizontalStressCracksVerticallyAndViceVersa) {
+  const TriMesh sheet = jittered_sheet(30, 30, 1.0, 1.0, 0.3, 9);
+  StressCracker h(StressMesh::from(sheet), sheet_params(StressPattern::Horizontal));
+  h.run();
+  StressCracker v(StressMesh::from(sheet), sheet_params(StressPattern::Vertical));
+  v.run();
+  ASSERT_GT(h.stats().crack_edges, 30);
+  ASSERT_GT(v.stats().crack_edges, 30);
+  EXPECT_GT(vertical_fraction(h.mesh()), 0.75);
+  EXPECT_LT(vertical_fraction(v.mesh()), 0.25);
+}
+
+TEST(StressCracker, StrokeCracksAlongTheStroke) {
+  // No stress but a diagonal UV stroke: the cracks lie near the stroke and run along it.
+  const TriMesh sheet = jittered_sheet(30, 30, 1.0, 1.0, 0.3, 4);
+  StressParams p = sheet_params(StressPattern::Strokes);
+  StressStroke s;
+  s.points = {{0.2, 0.2, 0}, {0.8, 0.8, 0}};
+  p.strokes = {s};
+  StressCracker c(StressMesh::from(sheet), p);
+  c.run();
+  const StressMesh& m = c.mesh();
+  const SurfaceMesh& g = m.mesh();
+  const Eigen::Vector3d along = Eigen::Vector3d(1, 1, 0).normalized();
+  double length = 0, parallel = 0;
+  for (EdgeId e : g.edges()) {
+    if (!m.crack(e)) continue;
+    const Eigen::Vector3d a = m.point(g.vertex(e, 0)), b = m.point(g.vertex(e, 1)), mid = 0.5 * (a + b);
+    // Distance from the stroke's line.
+    EXPECT_LT(std::abs(mid.x() - mid.y()) / std::sqrt(2.0), 0.12);
+    length += (b - a).norm();
+    parallel += std::abs((b - a).dot(along));
+  }
+  ASSERT_GT(length, 0.3);
+  EXPECT_GT(parallel / length, 0.8);
+}
+
+TEST(StressCracker, SameResultOnOneAndTwoThreads) {
+  const TriMesh cyl = cylinder_mesh(0.2, 1.0, 40, 30, 0.3, 2);
+  StressParams p = sheet_params(StressPattern::Horizontal);
+  p.crack_rotation = 0.2;
+  p.random_rotation = 0.1;
+  p.stress_alleviation = 0.3;
+  p.relaxations_per_iteration = 2;
+  auto run = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    StressCracker c(StressMesh::from(cyl), p);
+    c.run();
+    return c.result();
+  };
+  const CrackedMesh a = run(1), b = run(2);
+  ASSERT_EQ(a.mesh.positions.size(), b.mesh.positions.size());
+  ASSERT_EQ(a.crack_edges, b.crack_edges);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  for (size_t k = 0; k < a.mesh.positions.size(); ++k) {
+    EXPECT_EQ(a.mesh.positions[k], b.mesh.positions[k]);
+    EXPECT_EQ(a.displacement[k], b.displacement[k]);
+  }
+  EXPECT_FALSE(a.crack_edges.empty());
+}
+
+TEST(StressCracker, NewFacesRespectTheKappaClamp) {
+  const TriMesh sheet = jittered_sheet(20, 20, 1.0, 1.0, 0.3, 6);
+  StressParams p = sheet_params(StressPattern::UniformTension);
+  p.kappa = 1.5;
+  StressMesh m = StressMesh::from(sheet);
+  const double bound = p.kappa * m.max_beta_singular_value();
+  StressCracker c(std::move(m), p);
+  c.run();
+  ASSERT_GT(c.stats().splits, 0);
+  for (FaceId f : c.mesh().mesh().faces())
+    EXPECT_LE(Eigen::JacobiSVD<Eigen::Matrix3d>(c.mesh().face(f).beta).singularValues()[0], bound * (1 + 1e-9));
+}
+
+TEST(StressMesh, RefusesMalformedMeshes) {
+  auto refused = [](const TriMesh& t, const std::string& where, const std::string& what) {
+    try {
+      (void)StressMesh::from(t);
+      ADD_FAILURE() << "accepted: " << what;
+    } catch (const MeshError& e) {
+      EXPECT_EQ(e.where, where);
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  TriMesh empty;
+  refused(empty, "mesh", "no triangles");
+  TriMesh t;
+  t.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}};
+  t.triangles = {{0, 1, 7}};
+  refused(t, "triangle 0", "out of range");
+  t.triangles = {{0, 1, 1}};
+  refused(t, "triangle 0", "degenerate");
+  TriMesh line = t;
+  line.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  line.triangles = {{0, 1, 2}};
+  refused(line, "triangle 0", "zero area");
+  // Three triangles on one edge.
+  t.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  refused(t, "triangle 2", "non-manifold");
+  TriMesh nan = line;
+  nan.positions[1].x() = std::nan("");
+  refused(nan, "vertex 1", "non-finite");
+}
