@@ -13,6 +13,7 @@
 #include "renderer/errors.h"
 #include "renderer/progress.h"
 #include "renderer/scene_parser.h"
+#include "cli/simulate_stress.h"
 #include "renderer/strip_bark_tree.h"
 
 namespace phellem {
@@ -102,10 +103,27 @@ int run_simulate(const cli::Options& o) {
     }
     crossings += long(sim.bark().crossings().size());
   }
-  if (outputs == 0)
-    throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to simulate");
+  const StressRunTotals stress = simulate_stress_objects(o, desc, dir);
+  if (outputs == 0 && stress.objects == 0)
+    throw UserError(o.scene, "objects", "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
   if (!o.stats.empty()) {
-    nlohmann::json j = {{"model", "strips"},
+    nlohmann::json j;
+    if (stress.objects > 0) {
+      j = {{"model", "stress"},
+           {"objects", stress.objects},
+           {"triangles_in", stress.triangles_in},
+           {"triangles_out", stress.triangles_out},
+           {"iterations", stress.iterations},
+           {"cracks", stress.cracks},
+           {"crack_edges", stress.crack_edges},
+           {"crack_length_m", stress.crack_length},
+           {"outputs", stress.outputs},
+           {"time_s", {{"total", since(t0)}, {"preprocess", stress.t_preprocess}, {"simulate", stress.t_simulate}, {"write", stress.t_write}}}};
+    }
+    if (outputs > 0) {
+      if (stress.objects > 0) j["model"] = "strips+stress";
+      else j["model"] = "strips";
+      j.update(nlohmann::json{
                         {"strips", strips},
                         {"steps", steps},
                         {"fractures", fractures},
@@ -116,7 +134,13 @@ int run_simulate(const cli::Options& o) {
                         {"outputs", files},
                         {"meshes", meshes},
                         {"mesh_triangles", mesh_triangles},
-                        {"time_s", {{"total", since(t0)}, {"simulate", t_sim}, {"dress", t_dress}, {"mesh", t_mesh}}}};
+      });
+      j["time_s"]["total"] = since(t0);
+      j["time_s"]["simulate"] = t_sim + stress.t_simulate;
+      j["time_s"]["dress"] = t_dress;
+      j["time_s"]["mesh"] = t_mesh;
+      if (stress.objects > 0) j["stress_outputs"] = stress.outputs;
+    }
     write_atomically(o.stats, [&](const std::string& tmp) {
       std::ofstream f(tmp);
       f << j.dump(2) << "\n";

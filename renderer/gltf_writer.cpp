@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <map>
+#include <stdexcept>
 
 #include "renderer/atomic_file.h"
 #include "renderer/errors.h"
@@ -72,6 +73,11 @@ void write_glb(const std::string& path, const std::string& mesh_name, const GlbM
     attributes["TEXCOORD_0"] = add_accessor(model, add_view(model, uv.data(), n * 8, TINYGLTF_TARGET_ARRAY_BUFFER),
                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
   }
+  for (const auto& [name, values] : glb.scalars) {
+    if (name.empty() || name[0] != '_' || values.size() != n) throw std::logic_error("write_glb: bad custom attribute " + name);
+    attributes[name] = add_accessor(model, add_view(model, values.data(), n * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, n);
+  }
   for (const GlbPart& part : glb.parts) {
     if (part.indices.empty()) continue;
     tinygltf::Material mat;
@@ -82,7 +88,7 @@ void write_glb(const std::string& path, const std::string& mesh_name, const GlbM
     mat.doubleSided = false;
     model.materials.push_back(mat);
     tinygltf::Primitive prim;
-    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    prim.mode = part.lines ? TINYGLTF_MODE_LINE : TINYGLTF_MODE_TRIANGLES;
     prim.material = int(model.materials.size() - 1);
     prim.attributes = attributes;
     prim.indices = add_accessor(model, add_view(model, part.indices.data(), part.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),

@@ -14,17 +14,21 @@ namespace phellem {
 
 struct GlbPart {
   std::string name;               // material name (e.g. "epidermis", "fracture")
-  std::vector<uint32_t> indices;  // #F×3 into the mesh's vertices
+  std::vector<uint32_t> indices;  // #F×3 into the mesh's vertices (lines: #E×2)
   Color base_color{0.5f, 0.5f, 0.5f};
   float roughness = 0.8f;
+  bool lines = false;             // a LINES primitive (e.g. crack edges) instead of triangles
 };
 
 struct GlbMesh {
   MeshData vertices;  // positions, normals, uvs (optional); its indices are not written
+  // Application-specific per-vertex scalars (glTF custom attributes: names start with "_").
+  std::vector<std::pair<std::string, std::vector<float>>> scalars;
   std::vector<GlbPart> parts;
   size_t triangle_count() const {
     size_t n = 0;
-    for (const GlbPart& p : parts) n += p.indices.size() / 3;
+    for (const GlbPart& p : parts)
+      if (!p.lines) n += p.indices.size() / 3;
     return n;
   }
 };

@@ -69,6 +69,7 @@ class JsonValue {
   bool is_string() const { return j_->is_string(); }
   bool is_array() const { return j_->is_array(); }
   bool is_number() const { return j_->is_number(); }
+  bool is_bool() const { return j_->is_boolean(); }
   JsonObject object() const;
   std::vector<JsonValue> array() const;
   const nlohmann::json& raw() const { return *j_; }

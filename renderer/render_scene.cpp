@@ -10,6 +10,7 @@
 #include "renderer/displacement.h"
 #include "renderer/errors.h"
 #include "renderer/mesh_io.h"
+#include "renderer/mesh_source.h"
 #include "renderer/strip_bark_tree.h"
 #include "renderer/tessellation.h"
 #include "renderer/tree_surface.h"
@@ -288,6 +289,15 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
         break;
       }
       case ObjectType::Mesh: {
+        if (o.procedural) {
+          MeshData w = to_mesh_data(object_trimesh(o));
+          compute_vertex_normals(w);
+          if (o.displacement.type != DisplacementDesc::Type::None)
+            jobs.push_back({&o, mat, object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement), nullptr});
+          else
+            add_top(std::move(w), mat, object_id);
+          break;
+        }
         auto it = models.find(o.file);
         if (it == models.end()) {
           LoadedModel model = load_mesh_file(o.file);

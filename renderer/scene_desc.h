@@ -11,6 +11,7 @@
 
 #include "renderer/math.h"
 #include "renderer/strip_bark_desc.h"
+#include "renderer/stress_bark_desc.h"
 
 namespace phellem {
 
@@ -132,6 +133,18 @@ struct TreeDesc {
   float uv_repeat = 1.0f;      // texture repeats around the circumference
 };
 
+// A mesh made by Phellem instead of read from a file (bark/geometry/procedural_meshes.h):
+// `"procedural": {"shape": "trunk" | "torus_knot" | "vase" | "sheet" | "sphere", ...}`.
+struct ProceduralMeshDesc {
+  std::string shape;
+  int triangles = 8000;     // approximate
+  float radius = 0.15f;     // trunk, vase (base), torus knot (overall), sphere
+  float height = 1.0f;      // trunk, vase, sheet (and its width)
+  float tube = 0.06f;       // torus knot
+  float jitter = 0.3f;      // trunk, vase, sheet: vertex jitter (fraction of the spacing)
+  uint32_t seed = 1;        // of the jitter
+};
+
 enum class ObjectType { Sphere, Plane, Mesh, Tree };
 struct ObjectDesc {
   ObjectType type = ObjectType::Sphere;
@@ -147,7 +160,10 @@ struct ObjectDesc {
   Vec2f size{10, 10};
   float uv_scale = 1.0f;  // plane: metres per texture repeat
   // mesh
-  std::string file;
+  std::string file;  // empty for a procedural mesh
+  std::optional<ProceduralMeshDesc> procedural;
+  // mesh: `"bark": {"model": "stress", ...}` (the stress-field cracking model)
+  std::shared_ptr<const StressBarkDesc> stress_bark;
   TransformDesc transform;
   DisplacementDesc displacement;
   // tree

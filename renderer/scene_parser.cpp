@@ -334,6 +334,31 @@ BranchDesc parse_branch(const Ctx& c, JsonObject o, int depth) {
   return b;
 }
 
+ProceduralMeshDesc parse_procedural(JsonObject o) {
+  ProceduralMeshDesc p;
+  p.shape = o.string("shape");
+  if (p.shape != "trunk" && p.shape != "torus_knot" && p.shape != "vase" && p.shape != "sheet" && p.shape != "sphere")
+    o.fail("shape", "unknown procedural shape \"" + p.shape + "\"; allowed: trunk, torus_knot, vase, sheet, sphere");
+  if (auto v = o.get("triangles")) {
+    p.triangles = v->integer();
+    if (p.triangles < 20 || p.triangles > 20000000) v->fail("triangles must be an integer in [20, 20000000]");
+  }
+  if (auto v = o.get("radius")) p.radius = v->positive();
+  if (auto v = o.get("height")) p.height = v->positive();
+  if (auto v = o.get("tube")) p.tube = v->positive();
+  if (auto v = o.get("jitter")) {
+    p.jitter = v->non_negative();
+    if (p.jitter > 0.45f) v->fail("jitter must lie in [0, 0.45] (fraction of the vertex spacing)");
+  }
+  if (auto v = o.get("seed")) {
+    const int s = v->integer();
+    if (s < 0) v->fail("seed must be >= 0");
+    p.seed = uint32_t(s);
+  }
+  o.finish();
+  return p;
+}
+
 TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed) {
   TreeDesc t;
   auto axis = o.at("axis");
@@ -346,7 +371,11 @@ TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed) {
   if (auto v = o.get("branches"))
     for (auto& e : v->array()) t.branches.push_back(parse_branch(c, e.object(), 1));
   if (auto v = o.get("uv_repeat")) t.uv_repeat = v->positive();
-  if (auto v = o.get("bark")) t.strip_bark = std::make_shared<StripBarkDesc>(parse_strip_bark(v->object(), c.base_dir.string(), seed));
+  if (auto v = o.get("bark")) {
+    JsonObject bo = v->object();
+    if (bo.string("model", "") == "stress") bo.fail("model", "the stress model on trees is not supported yet: tessellate the tree into a mesh (glTF) and give the mesh object \"bark\": {\"model\": \"stress\"}");
+    t.strip_bark = std::make_shared<StripBarkDesc>(parse_strip_bark(v->object(), c.base_dir.string(), seed));
+  }
   return t;
 }
 
@@ -386,11 +415,20 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
     if (auto v = o.get("uv_scale")) d.uv_scale = v->positive();
   } else if (type == "mesh") {
     d.type = ObjectType::Mesh;
-    auto f = o.at("file");
-    d.file = c.resolve(f);
-    const std::string ext = fs::path(d.file).extension().string();
-    if (ext != ".gltf" && ext != ".glb" && ext != ".obj") f.fail("unsupported mesh format \"" + ext + "\"; allowed: .gltf, .glb, .obj");
+    if (o.has("file") == o.has("procedural")) o.fail(o.has("file") ? "procedural" : "", "a mesh has either \"file\" or \"procedural\"");
+    if (auto f = o.get("file")) {
+      d.file = c.resolve(*f);
+      const std::string ext = fs::path(d.file).extension().string();
+      if (ext != ".gltf" && ext != ".glb" && ext != ".obj") f->fail("unsupported mesh format \"" + ext + "\"; allowed: .gltf, .glb, .obj");
+    } else {
+      d.procedural = parse_procedural(o.at("procedural").object());
+    }
     if (auto t = o.get("transform")) d.transform.matrix = parse_transform(t->object());
+    if (auto b = o.get("bark")) {
+      JsonObject bo = b->object();
+      if (bo.string("model", "") == "strips") bo.fail("model", "the strip model needs a tree object (generalized cylinders); on meshes use \"stress\"");
+      d.stress_bark = std::make_shared<StressBarkDesc>(parse_stress_bark(b->object(), c.base_dir.string(), scene.render.seed));
+    }
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
     d.tree = parse_tree(c, o, scene.render.seed);

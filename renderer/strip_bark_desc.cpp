@@ -1,13 +1,12 @@
 #include "renderer/strip_bark_desc.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 
 #include "bark/strips/presets.h"
 #include "renderer/json_reader.h"
+#include "renderer/scene_image.h"
 
 namespace phellem {
 
@@ -16,23 +15,16 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 bark::ParamImage read_weakness_map(const JsonValue& v, const std::string& base_dir) {
-  std::filesystem::path p(v.string());
-  if (p.is_relative()) p = std::filesystem::path(base_dir) / p;
-  if (!std::filesystem::is_regular_file(p)) v.fail("file not found: " + p.string());
-  auto in = OIIO::ImageInput::open(p.string());
-  if (!in) v.fail("cannot read image " + p.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) v.fail("cannot read image " + p.string() + ": " + in->geterror());
+  const SceneImage in = read_scene_image(v, base_dir);
+  const size_t nc = size_t(in.channels);
   bark::ParamImage img;
-  img.width = spec.width;
-  img.height = spec.height;
-  img.values.resize(size_t(spec.width) * spec.height);
+  img.width = in.width;
+  img.height = in.height;
+  img.values.resize(size_t(in.width) * in.height);
   // Row 0 of the image is its top: the top of the trunk (s = length) is v = 1.
-  for (int y = 0; y < spec.height; ++y)
-    for (int x = 0; x < spec.width; ++x)
-      img.values[size_t(spec.height - 1 - y) * spec.width + x] =
-          std::clamp(all[(size_t(y) * spec.width + x) * spec.nchannels], 0.0f, 1.0f);
+  for (int y = 0; y < in.height; ++y)
+    for (int x = 0; x < in.width; ++x)
+      img.values[size_t(in.height - 1 - y) * in.width + x] = std::clamp(in.pixels[(size_t(y) * in.width + x) * nc], 0.0f, 1.0f);
   return img;
 }
 
@@ -48,22 +40,14 @@ bark::ColorSample read_sample(JsonObject o, const std::string& base_dir, bark::C
   if (auto v = o.get("variation")) s.variation = v->non_negative();
   if (auto v = o.get("grain")) s.grain = v->positive();
   if (auto v = o.get("image")) {
-    std::filesystem::path p(v->string());
-    if (p.is_relative()) p = std::filesystem::path(base_dir) / p;
-    if (!std::filesystem::is_regular_file(p)) v->fail("file not found: " + p.string());
-    auto in = OIIO::ImageInput::open(p.string());
-    if (!in) v->fail("cannot read image " + p.string() + ": " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
-      v->fail("cannot read image " + p.string() + ": " + in->geterror());
-    const bool encoded = spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
-    s.width = spec.width;
-    s.height = spec.height;
-    s.rgb.resize(size_t(spec.width) * spec.height * 3);
-    for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
+    const SceneImage in = read_scene_image(*v, base_dir);
+    const bool encoded = in.encoded;
+    s.width = in.width;
+    s.height = in.height;
+    s.rgb.resize(size_t(in.width) * in.height * 3);
+    for (size_t i = 0; i < size_t(in.width) * in.height; ++i)
       for (int c = 0; c < 3; ++c) {
-        const float x = std::max(0.0f, all[i * spec.nchannels + size_t(std::min(c, spec.nchannels - 1))]);
+        const float x = std::max(0.0f, in.pixels[i * size_t(in.channels) + size_t(std::min(c, in.channels - 1))]);
         s.rgb[i * 3 + size_t(c)] = encoded ? srgb_to_linear(x) : x;
       }
     const Vec2f size = o.at("size").vec2();

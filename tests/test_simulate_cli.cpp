@@ -135,7 +135,7 @@ TEST(SimulateCli, BadBarkSettingsNameTheirPath) {
   test::write_text(scene, R"({"objects": [{"type": "sphere", "radius": 1}]})");
   const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("no tree object has a"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no object has a \"bark\" to simulate"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -84,6 +84,15 @@ TriMesh icosphere(int subdivisions, double radius) {
 }
 
 TriMesh cylinder_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed) {
+  return revolved_mesh([radius](double) { return radius; }, height, around, along, jitter, seed);
+}
+
+TriMesh vase_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed) {
+  return revolved_mesh([radius](double t) { return radius * (0.55 + 0.45 * std::sin(kPi * std::min(1.0, 1.15 * t)) + 0.25 * t * t); },
+                       height, around, along, jitter, seed);
+}
+
+TriMesh revolved_mesh(const std::function<double(double)>& radius_at, double height, int around, int along, double jitter, uint64_t seed) {
   TriMesh m;
   const double dt = 2 * kPi / around, dy = height / along;
   // Vertices (i, j), i in [0, around) (welded around), plus seam copies at i = around for UVs.
@@ -96,6 +105,7 @@ TriMesh cylinder_mesh(double radius, double height, int around, int along, doubl
         th += jitter * dt * rng.symmetric();
         y += jitter * dy * rng.symmetric();
       }
+      const double radius = radius_at(y / height);
       m.positions.emplace_back(radius * std::cos(th), y, -radius * std::sin(th));
       m.uvs.emplace_back(double(i) / around, y / height);
     }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "bark/geometry/tri_mesh.h"
 
@@ -19,6 +20,12 @@ TriMesh icosphere(int subdivisions, double radius);
 // to `jitter` × the spacing (in the surface); welded around (no seam in the geometry), UVs
 // with a seam at θ = 0.
 TriMesh cylinder_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed);
+
+// The same around a radius profile r(t), t = y / height ∈ [0, 1] (a vase, a flared trunk).
+TriMesh revolved_mesh(const std::function<double(double)>& radius, double height, int around, int along, double jitter, uint64_t seed);
+
+// A vase: a surface of revolution with a belly and a narrower neck.
+TriMesh vase_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed);
 
 // A (p, q) torus knot tube: `segments` rings of `sides` vertices; closed.
 TriMesh torus_knot(int p, int q, double radius, double tube, int segments, int sides);

@@ -1,0 +1,24 @@
+// `phellem simulate` for the scene's mesh objects with `"bark": {"model": "stress"}`: the
+// stress-field cracking model (bark/stress/), written as a CrackedMesh .glb and a JSON summary
+// per object.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli/options.h"
+#include "renderer/scene_desc.h"
+
+namespace phellem {
+
+struct StressRunTotals {
+  int objects = 0;
+  long long triangles_in = 0, triangles_out = 0, cracks = 0, crack_edges = 0;
+  int iterations = 0;
+  double crack_length = 0, t_preprocess = 0, t_simulate = 0, t_write = 0;
+  nlohmann::json outputs = nlohmann::json::array();
+};
+
+StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir);
+
+}  // namespace phellem

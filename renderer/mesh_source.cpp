@@ -1,0 +1,65 @@
+#include "renderer/mesh_source.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bark/geometry/procedural_meshes.h"
+#include "renderer/mesh_io.h"
+
+namespace phellem {
+
+bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
+  const uint32_t seed = p.seed;
+  const double n = std::max(20, p.triangles);
+  if (p.shape == "trunk" || p.shape == "vase") {
+    // Quads about square: along / around ≈ height / circumference.
+    const double aspect = p.height / (2 * double(kPi) * p.radius);
+    const int around = std::max(3, int(std::lround(std::sqrt(n / 2 / aspect))));
+    const int along = std::max(1, int(std::lround(n / 2 / around)));
+    return p.shape == "trunk" ? bark::cylinder_mesh(p.radius, p.height, around, along, p.jitter, seed)
+                              : bark::vase_mesh(p.radius, p.height, around, along, p.jitter, seed);
+  }
+  if (p.shape == "sheet") {
+    const int k = std::max(1, int(std::lround(std::sqrt(n / 2))));
+    return bark::jittered_sheet(k, k, p.height, p.height, p.jitter, seed);
+  }
+  if (p.shape == "sphere") {
+    int s = 0;
+    while (20.0 * std::pow(4.0, s + 1) <= n && s < 9) ++s;
+    return bark::icosphere(s, p.radius);
+  }
+  // Torus knot (2, 3): rings of `sides` vertices, segments along the tube ≈ its length / spacing.
+  const double length = 2 * double(kPi) * p.radius * 2.2;  // about the knot's length
+  const int sides = std::max(3, int(std::lround(std::sqrt(n / 2 * 2 * double(kPi) * p.tube / length))));
+  const int segments = std::max(3, int(std::lround(n / 2 / sides)));
+  return bark::torus_knot(2, 3, p.radius, p.tube, segments, sides);
+}
+
+bark::TriMesh object_trimesh(const ObjectDesc& o) {
+  bark::TriMesh t;
+  if (o.procedural) {
+    t = procedural_trimesh(*o.procedural);
+  } else {
+    const LoadedModel model = load_mesh_file(o.file);
+    for (const MeshData& m : model.meshes) {
+      const uint32_t base = uint32_t(t.positions.size());
+      for (const Vec3f& p : m.positions) t.positions.push_back(p.cast<double>());
+      for (size_t k = 0; k < m.positions.size(); ++k)
+        t.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
+      for (size_t k = 0; k + 2 < m.indices.size(); k += 3) t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
+    }
+  }
+  const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
+  for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
+  return t;
+}
+
+MeshData to_mesh_data(const bark::TriMesh& t) {
+  MeshData m;
+  for (const auto& p : t.positions) m.positions.push_back(p.cast<float>());
+  for (const auto& u : t.uvs) m.uvs.push_back(u.cast<float>());
+  for (const auto& tri : t.triangles) m.indices.insert(m.indices.end(), tri.begin(), tri.end());
+  return m;
+}
+
+}  // namespace phellem
