@@ -3,6 +3,7 @@
 #include <chrono>
 #include <fstream>
 
+#include "bark/geometry/irregular_remesh.h"
 #include "bark/stress/stress_cracker.h"
 #include "renderer/atomic_file.h"
 #include "renderer/cracked_mesh_io.h"
@@ -27,7 +28,7 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
     bark::StressParams params = obj.stress_bark->params;
     if (o.seed) params.seed = *o.seed;
     const auto tp = Clock::now();
-    const bark::TriMesh input = object_trimesh(obj);
+    bark::TriMesh input = object_trimesh(obj);
     // The mesh's own problems are reported at the mesh file, or at the object for procedural ones.
     const std::string mesh_file = obj.file.empty() ? desc.file : obj.file;
     auto mesh_error = [&](const bark::MeshError& e) {
@@ -35,6 +36,13 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
     };
     bark::StressMesh mesh = [&] {
       try {
+        if (obj.stress_bark->preprocess.enabled) {
+          bark::RemeshOptions ro;
+          ro.edge_length = obj.stress_bark->preprocess.edge_length;
+          ro.jitter = obj.stress_bark->preprocess.jitter;
+          ro.seed = params.seed;
+          input = bark::irregular_remesh(input, ro);
+        }
         return bark::StressMesh::from(input);
       } catch (const bark::MeshError& e) {
         throw mesh_error(e);
@@ -42,7 +50,7 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
     }();
     totals.t_preprocess += since(tp);
     const auto ts = Clock::now();
-    const size_t triangles_in = mesh.mesh().number_of_faces();
+    const size_t triangles_in = mesh.mesh().number_of_faces();  // after preprocessing
     std::optional<bark::StressCracker> cracker;
     try {
       cracker.emplace(std::move(mesh), params);

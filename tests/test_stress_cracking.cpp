@@ -10,7 +10,10 @@
 #include <Eigen/SVD>
 #include <cmath>
 
+#include "bark/geometry/irregular_remesh.h"
 #include "bark/geometry/procedural_meshes.h"
+
+#include <map>
 #include "bark/stress/crack_insertion.h"
 #include "bark/stress/stress_cracker.h"
 #include "bark/stress/stress_mesh.h"
@@ -215,4 +218,59 @@ TEST(StressMesh, RefusesMalformedMeshes) {
   TriMesh nan = line;
   nan.positions[1].x() = std::nan("");
   refused(nan, "vertex 1", "non-finite");
+}
+
+TEST(IrregularRemesh, WellShapedIrregularAndUVsFollowTheSurface) {
+  // A regular sheet with UV = (x, y): after remeshing every corner's UV is still its position,
+  // triangles are well shaped, and the valences are no longer all six.
+  const TriMesh sheet = jittered_sheet(20, 20, 1.0, 1.0, 0.0, 1);
+  RemeshOptions o;
+  o.edge_length = 0.04;
+  const TriMesh r = irregular_remesh(sheet, o);
+  ASSERT_FALSE(r.triangles.empty());
+  StressMesh m = StressMesh::from(r);  // valid manifold
+  EXPECT_TRUE(m.mesh().is_valid(false));
+  double edge = 0;
+  for (EdgeId e : m.mesh().edges()) edge += (m.point(m.mesh().vertex(e, 0)) - m.point(m.mesh().vertex(e, 1))).norm();
+  edge /= double(m.mesh().number_of_edges());
+  EXPECT_NEAR(edge, 0.04, 0.01);
+  int slivers = 0;
+  for (const auto& t : r.triangles) slivers += min_angle(r.positions[t[0]], r.positions[t[1]], r.positions[t[2]]) < 15 * kPi / 180;
+  EXPECT_LT(slivers, int(r.triangles.size() / 50));
+  for (size_t k = 0; k < r.positions.size(); ++k) {
+    EXPECT_NEAR(r.uvs[k].x(), r.positions[k].x(), 1e-9);
+    EXPECT_NEAR(r.uvs[k].y(), r.positions[k].y(), 1e-9);
+    EXPECT_NEAR(r.positions[k].z(), 0.0, 1e-12);
+  }
+  std::map<size_t, int> valence;
+  for (VertexId v : m.mesh().vertices())
+    if (!m.mesh().is_border(v)) ++valence[m.mesh().degree(v)];
+  EXPECT_LT(valence[6], int(0.8 * double(m.mesh().number_of_vertices())));
+}
+
+TEST(IrregularRemesh, KeepsTheUVSeamOfACylinder) {
+  // The cylinder is welded around but its UVs jump from 1 back to 0: no face may interpolate
+  // across the jump, and the corners on the seam carry both values.
+  const TriMesh cyl = cylinder_mesh(0.2, 1.0, 24, 20, 0.0, 1);
+  RemeshOptions o;
+  o.edge_length = 0.05;
+  const TriMesh r = irregular_remesh(cyl, o);
+  int seam_low = 0, seam_high = 0;
+  for (const auto& t : r.triangles) {
+    double lo = 1e9, hi = -1e9;
+    for (uint32_t k : t) {
+      lo = std::min(lo, r.uvs[k].x());
+      hi = std::max(hi, r.uvs[k].x());
+      const double theta = std::atan2(-r.positions[k].z(), r.positions[k].x());  // cylinder_mesh: u = θ / 2π
+      const double u = theta < -1e-9 ? theta / (2 * kPi) + 1 : theta / (2 * kPi);
+      // (u is linear along each facet's chord: within 2e-3 of θ / 2π on this 24-sided prism.)
+      EXPECT_TRUE(std::abs(r.uvs[k].x() - u) < 2e-3 || std::abs(r.uvs[k].x() - u - 1) < 2e-3 || std::abs(r.uvs[k].x() - u + 1) < 2e-3)
+          << r.uvs[k].x() << " vs " << u;
+      seam_low += r.uvs[k].x() < 1e-9;
+      seam_high += r.uvs[k].x() > 1 - 1e-9;
+    }
+    EXPECT_LT(hi - lo, 0.5);
+  }
+  EXPECT_GT(seam_low, 0);
+  EXPECT_GT(seam_high, 0);
 }

@@ -19,9 +19,10 @@ namespace phellem::bark {
 namespace {
 constexpr double kPi = 3.141592653589793;
 
-// Largest eigenvalue of a symmetric 3×3 tensor and its eigenvector.
+// Largest eigenvalue of a symmetric 3×3 tensor and its eigenvector (closed form).
 std::pair<double, Eigen::Vector3d> largest(const Eigen::Matrix3d& s) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(s);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+  es.computeDirect(s);
   return {es.eigenvalues()[2], es.eigenvectors().col(2)};
 }
 }  // namespace
@@ -140,9 +141,12 @@ void StressCracker::crack_step() {
 void StressCracker::iterate() {
   apply_growth_hooks();
   crack_step();
-  for (int r = 0; r < params_.relaxations_per_iteration; ++r) {
-    compute_forces(mesh_, forces_);
-    relax(mesh_, forces_, params_.time_step, &displacement_);
+  if (params_.relaxations_per_iteration > 0) {
+    const std::vector<double> stiffness = vertex_stiffness(mesh_);
+    for (int r = 0; r < params_.relaxations_per_iteration; ++r) {
+      compute_forces(mesh_, forces_, false);
+      relax(mesh_, forces_, params_.time_step, &displacement_, &stiffness);
+    }
   }
   ++stats_.iterations;
 }

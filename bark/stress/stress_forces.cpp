@@ -2,54 +2,63 @@
 
 #include <tbb/parallel_for.h>
 
-#include <Eigen/Eigenvalues>
+#include <cmath>
 
 namespace phellem::bark {
 
 std::pair<Eigen::Matrix2d, Eigen::Matrix2d> split_stress(const Eigen::Matrix2d& sigma) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(sigma);
-  Eigen::Matrix2d plus = Eigen::Matrix2d::Zero(), minus = Eigen::Matrix2d::Zero();
-  for (int i = 0; i < 2; ++i) {
-    const double v = es.eigenvalues()[i];
-    const Eigen::Vector2d n = es.eigenvectors().col(i);
-    (v > 0 ? plus : minus) += v * n * n.transpose();  // eq. 2 / eq. 3
-  }
-  return {plus, minus};
+  // Closed-form eigen-decomposition of the symmetric 2×2 tensor [[a, b], [b, c]].
+  const double a = sigma(0, 0), b = 0.5 * (sigma(0, 1) + sigma(1, 0)), c = sigma(1, 1);
+  const double mean = 0.5 * (a + c), r = std::hypot(0.5 * (a - c), b);
+  const double hi = mean + r, lo = mean - r;
+  if (lo >= 0) return {sigma, Eigen::Matrix2d::Zero()};  // eq. 2: all tensile
+  if (hi <= 0) return {Eigen::Matrix2d::Zero(), sigma};  // eq. 3: all compressive
+  // One of each: σ⁺ = v_hi n n^T (eq. 2), σ⁻ = σ − σ⁺ = v_lo m m^T (eq. 3). The eigenvector of
+  // `hi` from whichever row of (σ − hi·I) is better conditioned.
+  const Eigen::Vector2d e1(b, hi - a), e2(hi - c, b);
+  const Eigen::Vector2d n = (e1.squaredNorm() >= e2.squaredNorm() ? e1 : e2).normalized();
+  const Eigen::Matrix2d plus = hi * n * n.transpose();
+  return {plus, sigma - plus};
 }
 
 std::array<Eigen::Vector3d, 3> nodal_forces(const StressMesh& m, FaceId f, const Eigen::Matrix2d& sigma) {
+  // Eq. 1: f_i = −A Σ_j p_j (β_i σ β_jᵀ) = −A (Σ_j p_j β_j) σ β_iᵀ, with β_i the first two
+  // entries of β's row i; Σ_j p_j β_j is the embedding of the local frame, E = [u v], as the
+  // vertices never move.
   const FaceState& s = m.face(f);
-  const auto vs = m.vertices(f);
-  // Σ_j p_j β_jl (3×2): the embedding of the local frame, E = P·B.
-  const Eigen::Matrix<double, 3, 2> B = s.beta.leftCols<2>();
-  Eigen::Matrix<double, 3, 2> PB = Eigen::Matrix<double, 3, 2>::Zero();
-  for (int j = 0; j < 3; ++j) PB += m.point(vs[size_t(j)]) * B.row(j);
-  const Eigen::Matrix<double, 3, 2> PBs = PB * sigma;
+  const Eigen::Matrix<double, 3, 2> Es = s.frame * sigma;
   std::array<Eigen::Vector3d, 3> out;
-  for (int i = 0; i < 3; ++i) out[size_t(i)] = -s.area * (PBs * B.row(i).transpose());  // eq. 1
+  for (int i = 0; i < 3; ++i) out[size_t(i)] = -s.area * (Es * s.beta.row(i).head<2>().transpose());
   return out;
 }
 
-void compute_forces(const StressMesh& m, ForceField& out) {
+void compute_forces(const StressMesh& m, ForceField& out, bool split) {
   const SurfaceMesh& g = m.mesh();
-  out.tensile.assign(g.number_of_halfedges(), Eigen::Vector3d::Zero());
-  out.compressive.assign(g.number_of_halfedges(), Eigen::Vector3d::Zero());
-  out.total.assign(g.number_of_vertices(), Eigen::Vector3d::Zero());
+  // Per corner: with `split`, the tensile and compressive forces; otherwise the total force
+  // (eq. 1 is linear in σ) in `tensile`.
+  out.tensile.resize(g.number_of_halfedges());
+  out.compressive.resize(split ? g.number_of_halfedges() : 0);
+  out.total.resize(g.number_of_vertices());
   tbb::parallel_for(size_t(0), size_t(g.number_of_faces()), [&](size_t k) {
     const FaceId f(static_cast<SurfaceMesh::size_type>(k));
-    const auto [plus, minus] = split_stress(m.face(f).sigma);
-    const auto fp = nodal_forces(m, f, plus), fm = nodal_forces(m, f, minus);
     const auto cs = m.corners(f);
-    for (int i = 0; i < 3; ++i) {
-      out.tensile[cs[size_t(i)].idx()] = fp[size_t(i)];
-      out.compressive[cs[size_t(i)].idx()] = fm[size_t(i)];
+    if (split) {
+      const auto [plus, minus] = split_stress(m.face(f).sigma);
+      const auto fp = nodal_forces(m, f, plus), fm = nodal_forces(m, f, minus);
+      for (int i = 0; i < 3; ++i) {
+        out.tensile[cs[size_t(i)].idx()] = fp[size_t(i)];
+        out.compressive[cs[size_t(i)].idx()] = fm[size_t(i)];
+      }
+    } else {
+      const auto ft = nodal_forces(m, f, m.face(f).sigma);
+      for (int i = 0; i < 3; ++i) out.tensile[cs[size_t(i)].idx()] = ft[size_t(i)];
     }
   });
   tbb::parallel_for(size_t(0), size_t(g.number_of_vertices()), [&](size_t k) {
     const VertexId v(static_cast<SurfaceMesh::size_type>(k));
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (HalfedgeId h : CGAL::halfedges_around_target(g.halfedge(v), g))
-      if (!g.is_border(h)) sum += out.tensile[h.idx()] + out.compressive[h.idx()];
+      if (!g.is_border(h)) sum += split ? Eigen::Vector3d(out.tensile[h.idx()] + out.compressive[h.idx()]) : out.tensile[h.idx()];
     out.total[k] = sum;
   });
 }

@@ -21,13 +21,14 @@ std::array<Eigen::Vector3d, 3> nodal_forces(const StressMesh& m, FaceId f, const
 // The forces of every face at every corner, and their sums per vertex.
 struct ForceField {
   // Per halfedge h with a face: the tensile (σ⁺) and compressive (σ⁻) force of face(h) on
-  // target(h). Indexed by h.idx().
+  // target(h). Indexed by h.idx(). (Without the split: `tensile` holds the total force of σ.)
   std::vector<Eigen::Vector3d> tensile, compressive;
   // Per vertex (v.idx()): F = Σ over adjacent faces of f⁺ + f⁻, the force of eq. 7.
   std::vector<Eigen::Vector3d> total;
 };
 // Faces in parallel, then vertices in parallel (each sums its corners in a fixed order): the
-// result does not depend on the thread count.
-void compute_forces(const StressMesh& m, ForceField& out);
+// result does not depend on the thread count. `split`: also the tensile/compressive parts
+// (the separation tensor needs them; relaxation needs only the totals).
+void compute_forces(const StressMesh& m, ForceField& out, bool split = true);
 
 }  // namespace phellem::bark

@@ -22,22 +22,22 @@ std::vector<double> vertex_stiffness(const StressMesh& m) {
   return k;
 }
 
-void relax(StressMesh& m, const ForceField& forces, double dt, std::vector<Eigen::Vector3d>* displacement) {
+void relax(StressMesh& m, const ForceField& forces, double dt, std::vector<Eigen::Vector3d>* displacement,
+           const std::vector<double>* stiffness) {
   const SurfaceMesh& g = m.mesh();
-  const std::vector<double> k = vertex_stiffness(m);
+  std::vector<double> own;
+  if (!stiffness) own = vertex_stiffness(m);
+  const std::vector<double>& k = stiffness ? *stiffness : own;
   std::vector<Eigen::Vector3d> dp(g.number_of_vertices());
   for (size_t i = 0; i < dp.size(); ++i) dp[i] = k[i] > 0 ? Eigen::Vector3d(dt / k[i] * forces.total[i]) : Eigen::Vector3d::Zero();  // eq. 7
   tbb::parallel_for(size_t(0), size_t(g.number_of_faces()), [&](size_t k) {
     const FaceId f(static_cast<SurfaceMesh::size_type>(k));
     FaceState& s = m.face(f);
     const auto vs = m.vertices(f);
-    const Eigen::Matrix<double, 3, 2> B = s.beta.leftCols<2>();
-    Eigen::Matrix<double, 3, 2> PB = Eigen::Matrix<double, 3, 2>::Zero(), dPB = Eigen::Matrix<double, 3, 2>::Zero();
-    for (int j = 0; j < 3; ++j) {
-      PB += m.point(vs[size_t(j)]) * B.row(j);
-      dPB += dp[vs[size_t(j)].idx()] * B.row(j);
-    }
-    const Eigen::Matrix2d G = dPB.transpose() * PB;
+    // Σ_m p_[m] β_m is the frame E (the vertices do not move); Σ_n Δp_n β_n its change.
+    Eigen::Matrix<double, 3, 2> dPB = Eigen::Matrix<double, 3, 2>::Zero();
+    for (int j = 0; j < 3; ++j) dPB += dp[vs[size_t(j)].idx()] * s.beta.row(j).head<2>();
+    const Eigen::Matrix2d G = dPB.transpose() * s.frame;
     s.sigma += 0.5 * (G + G.transpose());  // eqs. 8–9
   });
   if (displacement) {

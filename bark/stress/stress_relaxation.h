@@ -23,7 +23,9 @@ namespace phellem::bark {
 // step Δt / k_n (Jacobi scaling) the step's stability no longer depends on the triangle sizes
 // (measured stable at Δt = 0.5 on cracked jittered meshes, diverging at 1), and the stress
 // energy still falls monotonically.
-void relax(StressMesh& m, const ForceField& forces, double dt, std::vector<Eigen::Vector3d>* displacement = nullptr);
+// `stiffness`: vertex_stiffness(m) if the caller has it (it changes only with the mesh).
+void relax(StressMesh& m, const ForceField& forces, double dt, std::vector<Eigen::Vector3d>* displacement = nullptr,
+           const std::vector<double>* stiffness = nullptr);
 
 // k_n per vertex (see relax()).
 std::vector<double> vertex_stiffness(const StressMesh& m);
