@@ -7,14 +7,13 @@ Eigen::Matrix3d outer_m(const Eigen::Vector3d& a) {
   return len > 0 ? Eigen::Matrix3d(a * a.transpose() / len) : Eigen::Matrix3d::Zero();
 }
 
-Eigen::Matrix3d separation_tensor(const StressMesh& m, const ForceField& forces, VertexId v) {
-  const SurfaceMesh& g = m.mesh();
+Eigen::Matrix3d separation_tensor(const StressTopology& t, const ForceField& forces, uint32_t v) {
   Eigen::Vector3d fplus = Eigen::Vector3d::Zero(), fminus = Eigen::Vector3d::Zero();
   Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
-  for (HalfedgeId h : CGAL::halfedges_around_target(g.halfedge(v), g)) {
-    if (g.is_border(h)) continue;
-    const Eigen::Vector3d& tp = forces.tensile[h.idx()];
-    const Eigen::Vector3d& tm = forces.compressive[h.idx()];
+  for (uint32_t k = t.vertex_begin[v]; k < t.vertex_begin[v + 1]; ++k) {
+    const uint32_t slot = t.vertex_slots[k];
+    const Eigen::Vector3d& tp = forces.tensile[slot];
+    const Eigen::Vector3d& tm = forces.compressive[slot];
     fplus += tp;
     fminus += tm;
     s += outer_m(tp) - outer_m(tm);

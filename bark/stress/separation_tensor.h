@@ -14,6 +14,6 @@ Eigen::Matrix3d outer_m(const Eigen::Vector3d& a);
 
 // Eq. 4: ς = ½(−m(f⁺) + Σ_{f∈{f⁺}} m(f) + m(f⁻) − Σ_{f∈{f⁻}} m(f)), f⁺ and f⁻ the sums of the
 // adjacent faces' tensile and compressive forces on v. Symmetric by construction.
-Eigen::Matrix3d separation_tensor(const StressMesh& m, const ForceField& forces, VertexId v);
+Eigen::Matrix3d separation_tensor(const StressTopology& t, const ForceField& forces, uint32_t v);
 
 }  // namespace phellem::bark

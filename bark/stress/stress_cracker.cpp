@@ -1,5 +1,6 @@
 #include "bark/stress/stress_cracker.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Eigenvalues>
@@ -76,29 +77,35 @@ void StressCracker::apply_growth_hooks() {
 void StressCracker::crack_step() {
   SurfaceMesh& g = mesh_.mesh();
   const size_t nv = g.number_of_vertices();
-  compute_forces(mesh_, forces_);
+  const StressTopology topology = StressTopology::build(mesh_);
+  compute_forces(mesh_, topology, forces_);
   separation_.resize(nv);
   residual_.resize(nv, Eigen::Matrix3d::Zero());
-  tbb::parallel_for(size_t(0), nv, [&](size_t k) {
-    const VertexId v(static_cast<SurfaceMesh::size_type>(k));
-    separation_[k] = separation_tensor(mesh_, forces_, v) + residual_[k];  // eq. 4 (+ eq. 6 from the last iteration)
-    residual_[k].setZero();
+  std::vector<double> top(nv);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 512), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t k = r.begin(); k != r.end(); ++k) {
+      separation_[k] = separation_tensor(topology, forces_, uint32_t(k)) + residual_[k];  // eq. 4 (+ eq. 6 from the last iteration)
+      residual_[k].setZero();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+      es.computeDirect(separation_[k], Eigen::EigenvaluesOnly);
+      top[k] = es.eigenvalues()[2];
+    }
   });
   // Priority queue on the largest tensile eigenvalue (ties: lower vertex index first).
   using Entry = std::pair<double, uint32_t>;
   auto later = [](const Entry& a, const Entry& b) { return a.first < b.first || (a.first == b.first && a.second > b.second); };
   std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
   for (size_t k = 0; k < nv; ++k)
-    if (const double l = largest(separation_[k]).first; l > tau_) queue.emplace(l, uint32_t(k));
+    if (top[k] > tau_) queue.emplace(top[k], uint32_t(k));
   std::vector<char> cracked(nv, 0);
   int made = 0;
   StreamRng rng(params_.seed ^ 0x637261636bULL, uint64_t(stats_.iterations), 0);
   while (!queue.empty() && made < params_.cracks_per_iteration) {
-    const auto [lambda, vi] = queue.top();
+    const uint32_t vi = queue.top().second;  // (a tip pushed again with more stress is met first)
     queue.pop();
     if (cracked[vi]) continue;
     const auto [l, n_plus] = largest(separation_[vi]);
-    if (l != lambda || !(l > tau_)) continue;  // stale entry
+    if (!(l > tau_)) continue;
     const VertexId v(vi);
     // The crack runs perpendicular to the eigenvector, in the tangent plane, optionally
     // rotated about the normal by a random angle.
@@ -142,10 +149,11 @@ void StressCracker::iterate() {
   apply_growth_hooks();
   crack_step();
   if (params_.relaxations_per_iteration > 0) {
-    const std::vector<double> stiffness = vertex_stiffness(mesh_);
+    const StressTopology topology = StressTopology::build(mesh_);
+    const std::vector<double> stiffness = vertex_stiffness(mesh_, topology);
     for (int r = 0; r < params_.relaxations_per_iteration; ++r) {
-      compute_forces(mesh_, forces_, false);
-      relax(mesh_, forces_, params_.time_step, &displacement_, &stiffness);
+      compute_forces(mesh_, topology, forces_, false);
+      relax(mesh_, topology, forces_, params_.time_step, &displacement_, &stiffness);
     }
   }
   ++stats_.iterations;

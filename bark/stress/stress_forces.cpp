@@ -1,5 +1,6 @@
 #include "bark/stress/stress_forces.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <cmath>
@@ -32,34 +33,36 @@ std::array<Eigen::Vector3d, 3> nodal_forces(const StressMesh& m, FaceId f, const
   return out;
 }
 
-void compute_forces(const StressMesh& m, ForceField& out, bool split) {
-  const SurfaceMesh& g = m.mesh();
-  // Per corner: with `split`, the tensile and compressive forces; otherwise the total force
-  // (eq. 1 is linear in σ) in `tensile`.
-  out.tensile.resize(g.number_of_halfedges());
-  out.compressive.resize(split ? g.number_of_halfedges() : 0);
-  out.total.resize(g.number_of_vertices());
-  tbb::parallel_for(size_t(0), size_t(g.number_of_faces()), [&](size_t k) {
-    const FaceId f(static_cast<SurfaceMesh::size_type>(k));
-    const auto cs = m.corners(f);
-    if (split) {
-      const auto [plus, minus] = split_stress(m.face(f).sigma);
-      const auto fp = nodal_forces(m, f, plus), fm = nodal_forces(m, f, minus);
-      for (int i = 0; i < 3; ++i) {
-        out.tensile[cs[size_t(i)].idx()] = fp[size_t(i)];
-        out.compressive[cs[size_t(i)].idx()] = fm[size_t(i)];
+void compute_forces(const StressMesh& m, const StressTopology& t, ForceField& out, bool split) {
+  const size_t nf = t.faces(), nv = t.vertices();
+  out.tensile.resize(3 * nf);
+  out.compressive.resize(split ? 3 * nf : 0);
+  out.total.resize(nv);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nf, 256), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t k = r.begin(); k != r.end(); ++k) {
+      const FaceId f(static_cast<SurfaceMesh::size_type>(k));
+      if (split) {
+        const auto [plus, minus] = split_stress(m.face(f).sigma);
+        const auto fp = nodal_forces(m, f, plus), fm = nodal_forces(m, f, minus);
+        for (size_t i = 0; i < 3; ++i) {
+          out.tensile[3 * k + i] = fp[i];
+          out.compressive[3 * k + i] = fm[i];
+        }
+      } else {
+        const auto ft = nodal_forces(m, f, m.face(f).sigma);
+        for (size_t i = 0; i < 3; ++i) out.tensile[3 * k + i] = ft[i];
       }
-    } else {
-      const auto ft = nodal_forces(m, f, m.face(f).sigma);
-      for (int i = 0; i < 3; ++i) out.tensile[cs[size_t(i)].idx()] = ft[size_t(i)];
     }
   });
-  tbb::parallel_for(size_t(0), size_t(g.number_of_vertices()), [&](size_t k) {
-    const VertexId v(static_cast<SurfaceMesh::size_type>(k));
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (HalfedgeId h : CGAL::halfedges_around_target(g.halfedge(v), g))
-      if (!g.is_border(h)) sum += split ? Eigen::Vector3d(out.tensile[h.idx()] + out.compressive[h.idx()]) : out.tensile[h.idx()];
-    out.total[k] = sum;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 512), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t v = r.begin(); v != r.end(); ++v) {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (uint32_t k = t.vertex_begin[v]; k < t.vertex_begin[v + 1]; ++k) {
+        const uint32_t slot = t.vertex_slots[k];
+        sum += split ? Eigen::Vector3d(out.tensile[slot] + out.compressive[slot]) : out.tensile[slot];
+      }
+      out.total[v] = sum;
+    }
   });
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bark/stress/stress_mesh.h"
+#include "bark/stress/stress_topology.h"
 
 namespace phellem::bark {
 
@@ -20,8 +21,8 @@ std::array<Eigen::Vector3d, 3> nodal_forces(const StressMesh& m, FaceId f, const
 
 // The forces of every face at every corner, and their sums per vertex.
 struct ForceField {
-  // Per halfedge h with a face: the tensile (σ⁺) and compressive (σ⁻) force of face(h) on
-  // target(h). Indexed by h.idx(). (Without the split: `tensile` holds the total force of σ.)
+  // Per slot 3f + i: the tensile (σ⁺) and compressive (σ⁻) force of face f on its vertex i.
+  // (Without the split: `tensile` holds the total force of σ.)
   std::vector<Eigen::Vector3d> tensile, compressive;
   // Per vertex (v.idx()): F = Σ over adjacent faces of f⁺ + f⁻, the force of eq. 7.
   std::vector<Eigen::Vector3d> total;
@@ -29,6 +30,6 @@ struct ForceField {
 // Faces in parallel, then vertices in parallel (each sums its corners in a fixed order): the
 // result does not depend on the thread count. `split`: also the tensile/compressive parts
 // (the separation tensor needs them; relaxation needs only the totals).
-void compute_forces(const StressMesh& m, ForceField& out, bool split = true);
+void compute_forces(const StressMesh& m, const StressTopology& t, ForceField& out, bool split = true);
 
 }  // namespace phellem::bark

@@ -24,11 +24,11 @@ namespace phellem::bark {
 // (measured stable at Δt = 0.5 on cracked jittered meshes, diverging at 1), and the stress
 // energy still falls monotonically.
 // `stiffness`: vertex_stiffness(m) if the caller has it (it changes only with the mesh).
-void relax(StressMesh& m, const ForceField& forces, double dt, std::vector<Eigen::Vector3d>* displacement = nullptr,
-           const std::vector<double>* stiffness = nullptr);
+void relax(StressMesh& m, const StressTopology& t, const ForceField& forces, double dt,
+           std::vector<Eigen::Vector3d>* displacement = nullptr, const std::vector<double>* stiffness = nullptr);
 
 // k_n per vertex (see relax()).
-std::vector<double> vertex_stiffness(const StressMesh& m);
+std::vector<double> vertex_stiffness(const StressMesh& m, const StressTopology& t);
 
 // Σ_faces A ‖σ‖²_F: relaxation lowers it (by 2Δt Σ_n |F_n|² / k_n to first order in Δt).
 double stress_energy(const StressMesh& m);
