@@ -22,7 +22,7 @@ BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInpu
   Color base = m.base;
   if (in.base_override) base = *in.base_override;
   else if (m.base_tex >= 0) base *= tex.rgb(m.base_tex, in.uv, in.footprint, in.primary);
-  base = base.max(0.0f).min(1.0f);
+  base = (base * in.base_scale).max(0.0f).min(1.0f);
   float rough = m.roughness;
   if (m.rough_tex >= 0) rough = std::clamp(rough * tex.scalar(m.rough_tex, in.uv, in.footprint, in.primary), 0.0f, 1.0f);
   b.base = base;

@@ -25,6 +25,7 @@ struct ShadingInput {
   float footprint;       // texture filter width in uv units
   bool primary = true;   // camera-ray hit: full-quality (bicubic) texture filtering
   const Color* base_override = nullptr;  // dressed bark albedo replacing the base colour
+  float base_scale = 1.0f;               // multiplies the base colour (crack depth darkening)
 };
 
 BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInput& in, Color* albedo);

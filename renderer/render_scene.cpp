@@ -10,7 +10,9 @@
 #include "renderer/displacement.h"
 #include "renderer/errors.h"
 #include "renderer/mesh_io.h"
+#include "renderer/crack_profile.h"
 #include "renderer/mesh_source.h"
+#include "renderer/stress_bark_run.h"
 #include "renderer/strip_bark_tree.h"
 #include "renderer/tessellation.h"
 #include "renderer/tree_surface.h"
@@ -34,6 +36,7 @@ struct RenderScene::Shape {
   int object_id = 0;
   int area_first = -1;
   std::shared_ptr<const bark::BarkSurface> bark;  // strip bark of a tree part
+  float crack_darkening = -1;  // ≥ 0: stress-bark cracks (mesh params hold normalized depth and mask)
 };
 struct RenderScene::Prototype {
   ScenePtr scene;
@@ -135,7 +138,7 @@ RenderScene::~RenderScene() {
 }
 
 void RenderScene::add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::shared_ptr<const MeshData> mesh, int material,
-                              int object_id, int area_first, std::shared_ptr<const bark::BarkSurface> bark) {
+                              int object_id, int area_first, std::shared_ptr<const bark::BarkSurface> bark, float crack_darkening) {
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
   rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->positions.data(), 0, sizeof(Vec3f),
                              mesh->positions.size());
@@ -151,6 +154,7 @@ void RenderScene::add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::s
   s.object_id = object_id;
   s.area_first = area_first;
   s.bark = std::move(bark);
+  s.crack_darkening = crack_darkening;
   stats_.geometry_bytes += s.mesh->memory_bytes() + (s.bark ? s.bark->memory_bytes() : 0);
 }
 
@@ -193,12 +197,13 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
                            materials_[material].emission});
     return first;
   };
-  auto add_top = [&](MeshData m, int material, int object_id, std::shared_ptr<const bark::BarkSurface> bark = nullptr) {
+  auto add_top = [&](MeshData m, int material, int object_id, std::shared_ptr<const bark::BarkSurface> bark = nullptr,
+                     float crack_darkening = -1) {
     auto mesh = padded(std::move(m));
     const int area_first = add_area(*mesh, material);
     stats_.unique_triangles += mesh->triangle_count();
     stats_.triangles += mesh->triangle_count();
-    add_mesh_to(scene_.get(), shapes_, mesh, material, object_id, area_first, std::move(bark));
+    add_mesh_to(scene_.get(), shapes_, mesh, material, object_id, area_first, std::move(bark), crack_darkening);
   };
 
   // Dicing set-up (screen space uses the dicing camera, fixed across turntable frames).
@@ -221,6 +226,12 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     std::shared_ptr<const MeshData> base;
     DisplacementFn disp;
     std::shared_ptr<const bark::BarkSurface> bark;
+    // Stress-bark cracks: the V-profiles (SurfaceDisplacementFn), per-vertex shading params,
+    // the crack-aware dicing predicate and the depth darkening.
+    SurfaceDisplacementFn crack_disp = {};
+    VertexParamFn crack_params = {};
+    std::function<bool(const Vec3f&, const Vec3f&)> refine = {};
+    float crack_darkening = -1;
   };
   std::vector<DicedJob> jobs;
   std::map<std::string, int> prototype_of_file;
@@ -289,6 +300,32 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
         break;
       }
       case ObjectType::Mesh: {
+        if (o.stress_bark) {
+          // Stress bark: crack the mesh (unless given), then displace the V-profiles of its
+          // cracks as real geometry, diced only where the cracks reach.
+          std::shared_ptr<const bark::CrackedMesh> cracked;
+          if (auto it = opts.cracked.find(oi); it != opts.cracked.end()) {
+            cracked = it->second;
+          } else {
+            const auto tb = Clock::now();
+            cracked = run_stress_object(desc, oi, std::nullopt, opts.progress).cracked;
+            opts.cracked[oi] = cracked;
+            opts.bark_seconds += seconds_since(tb);
+          }
+          MeshData base = to_mesh_data(cracked->mesh);
+          compute_vertex_normals(base);
+          auto profile = std::make_shared<const CrackProfile>(*cracked, o.stress_bark->look, uint32_t(o.stress_bark->params.seed));
+          DicedJob j{&o, mat, object_id, {}, std::make_shared<MeshData>(std::move(base)), nullptr, nullptr};
+          j.crack_disp = [profile](const Vec2f&, const Vec3f& p, const Vec3f& n) { return -profile->at(p, n).depth; };
+          j.crack_params = [profile](const Vec3f& p, const Vec3f& n) {
+            const CrackProfile::Sample s = profile->at(p, n);
+            return Vec2f(s.relative, s.mask);
+          };
+          if (tess.crack_aware) j.refine = [profile](const Vec3f& a, const Vec3f& b) { return profile->reaches(a, b); };
+          j.crack_darkening = o.stress_bark->look.darkening;
+          jobs.push_back(std::move(j));
+          break;
+        }
         if (o.procedural) {
           MeshData w = to_mesh_data(object_trimesh(o));
           compute_vertex_normals(w);
@@ -369,17 +406,25 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
   if (!jobs.empty()) {
     for (int iter = 0; iter < 8; ++iter) {
       long long estimate = 0;
-      for (const auto& j : jobs) estimate += j.base ? estimate_triangles(*j.base, j.disp, dicing) : estimate_triangles(j.surface, dicing);
+      for (const auto& j : jobs) {
+        DicingParams dj = dicing;
+        dj.refine_edge = j.refine;
+        estimate += !j.base ? estimate_triangles(j.surface, dicing)
+                    : j.crack_disp ? estimate_triangles(*j.base, j.crack_disp, dj)
+                                   : estimate_triangles(*j.base, j.disp, dicing);
+      }
       if (estimate <= tess.max_triangles) break;
       const float grow = std::sqrt(float(estimate) / float(tess.max_triangles)) * 1.05f;
       dicing.scale *= grow;
       stats_.dicing_scale *= grow;
     }
     for (const auto& j : jobs) {
-      MeshData m = j.base ? dice(*j.base, j.disp, dicing) : dice(j.surface, dicing);
+      DicingParams dj = dicing;
+      dj.refine_edge = j.refine;
+      MeshData m = !j.base ? dice(j.surface, dicing) : j.crack_disp ? dice(*j.base, j.crack_disp, dj, j.crack_params) : dice(*j.base, j.disp, dicing);
       stats_.diced_triangles += m.triangle_count();
       stats_.diced_bytes += m.memory_bytes();
-      add_top(std::move(m), j.material, j.object_id, j.bark);
+      add_top(std::move(m), j.material, j.object_id, j.bark, j.crack_darkening);
     }
   }
   stats_.tessellate_s = seconds_since(t0) - (opts.bark_seconds - bark_before);  // bark simulation reported apart
@@ -454,6 +499,7 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   hit->area_light = -1;
   hit->crack_mask = hit->crack_depth = 0;
   hit->bark = false;
+  hit->albedo_scale = 1.0f;
   if (shape->sphere) {
     const Vec3f n = (hit->p - shape->center).normalized();
     hit->ng = hit->ns = n;
@@ -491,6 +537,12 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
     hit->crack_mask = sh.mask;
     hit->crack_depth = sh.depth;
     hit->bark_albedo = Color(sh.albedo.x(), sh.albedo.y(), sh.albedo.z());
+  }
+  if (shape->crack_darkening >= 0 && !m.params.empty()) {
+    const Vec2f q = w * m.params[idx[0]] + u * m.params[idx[1]] + v * m.params[idx[2]];
+    hit->crack_depth = q.x();
+    hit->crack_mask = q.y();
+    hit->albedo_scale = 1.0f - shape->crack_darkening * q.x();
   }
   if (!m.tangents.empty())
     hit->tangent = w * m.tangents[idx[0]] + u * m.tangents[idx[1]] + v * m.tangents[idx[2]];

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bark/dressing/bark_surface.h"
+#include "bark/stress/cracked_mesh.h"
 #include "renderer/camera.h"
 #include "renderer/light.h"
 #include "renderer/material.h"
@@ -37,6 +38,7 @@ struct SurfaceHit {
   float crack_mask = 0, crack_depth = 0;
   bool bark = false;
   Color bark_albedo = Color::Zero();
+  float albedo_scale = 1.0f;  // stress-bark cracks: depth darkening of the material's base colour
 };
 
 // How a RenderScene is built beyond the SceneDesc: bark surfaces already simulated (per
@@ -44,6 +46,9 @@ struct SurfaceHit {
 // simulated while the scene is built — and whether that shows progress.
 struct SceneBuildOptions {
   std::map<size_t, std::vector<std::shared_ptr<const bark::BarkSurface>>> bark;
+  // Stress-bark meshes already cracked (per 0-based object index); others are cracked while the
+  // scene is built.
+  std::map<size_t, std::shared_ptr<const bark::CrackedMesh>> cracked;
   bool progress = false;
   double bark_seconds = 0;  // out: time spent simulating and dressing bark
 };
@@ -114,7 +119,7 @@ class RenderScene {
   struct Prototype;
   struct Instance;
   void add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::shared_ptr<const MeshData> mesh, int material, int object_id,
-                   int area_first, std::shared_ptr<const bark::BarkSurface> bark = nullptr);
+                   int area_first, std::shared_ptr<const bark::BarkSurface> bark = nullptr, float crack_darkening = -1);
   void fill_hit(const struct RTCRayHit& rh, const Ray& ray, SurfaceHit* hit) const;
 
   DevicePtr device_;

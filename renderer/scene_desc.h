@@ -43,6 +43,7 @@ struct TessellationDesc {
   float edge_length_scale = 1.0f;  // memory knob: multiplies the target edge
   long long max_triangles = 20'000'000;  // memory knob: budget for all diced surfaces
   std::optional<CameraDesc> dicing_camera;  // default: the render camera
+  bool crack_aware = true;  // stress-bark cracks: refine only the surface the cracks reach
 };
 
 struct RenderDesc {

@@ -85,6 +85,7 @@ TessellationDesc parse_tessellation(JsonObject o) {
     t.max_triangles = n;
   }
   if (auto v = o.get("dicing_camera")) t.dicing_camera = parse_camera(v->object());
+  t.crack_aware = o.boolean("crack_aware", true);
   o.finish();
   return t;
 }

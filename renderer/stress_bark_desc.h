@@ -14,9 +14,9 @@ class JsonObject;
 // Crack geometry for rendering (sec. 4.2 as real geometry): a V-profile whose half-width grows
 // with the Algorithm 1 width and whose depth grows with the half-width, both modulated by noise.
 struct CrackLook {
-  float width_per_edge = 0.0015f;  // half-width (m) per crack edge of Algorithm 1 width
-  float min_width = 0.001f;        // half-width at the crack's ends (m)
-  float max_width = 0.008f;        // half-width cap (m)
+  float width_per_edge = 0.0008f;  // half-width (m) per crack edge of Algorithm 1 width
+  float min_width = 0.0008f;       // half-width at the crack's ends (m)
+  float max_width = 0.006f;        // half-width cap (m)
   float depth_per_width = 1.2f;    // depth / half-width
   float max_depth = 0.012f;        // depth cap (m)
   float noise = 0.3f;              // relative modulation of width and depth

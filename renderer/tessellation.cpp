@@ -201,15 +201,15 @@ struct EdgeTable {
   std::vector<int> rate;
 };
 
-Vec3f displaced(const MeshData& m, const DisplacementFn& disp, uint32_t a, uint32_t b, uint32_t c, const Vec3f& bary) {
+Vec3f displaced(const MeshData& m, const SurfaceDisplacementFn& disp, uint32_t a, uint32_t b, uint32_t c, const Vec3f& bary) {
   const Vec3f p = bary[0] * m.positions[a] + bary[1] * m.positions[b] + bary[2] * m.positions[c];
   const Vec3f n = (bary[0] * m.normals[a] + bary[1] * m.normals[b] + bary[2] * m.normals[c]).normalized();
   Vec2f uv = Vec2f::Zero();
   if (!m.uvs.empty()) uv = bary[0] * m.uvs[a] + bary[1] * m.uvs[b] + bary[2] * m.uvs[c];
-  return p + n * disp(uv, p);
+  return p + n * disp(uv, p, n);
 }
 
-EdgeTable edge_rates(const MeshData& m, const DisplacementFn& disp, const DicingParams& d) {
+EdgeTable edge_rates(const MeshData& m, const SurfaceDisplacementFn& disp, const DicingParams& d) {
   EdgeTable t;
   for (size_t f = 0; f + 2 < m.indices.size(); f += 3)
     for (int e = 0; e < 3; ++e) {
@@ -221,6 +221,7 @@ EdgeTable edge_rates(const MeshData& m, const DisplacementFn& disp, const Dicing
   tbb::parallel_for(size_t(0), t.ends.size(), [&](size_t e) {
     std::array<Vec3f, kEdgeSamples + 1> pts;
     const auto [a, b] = t.ends[e];
+    if (d.refine_edge && !d.refine_edge(m.positions[a], m.positions[b])) return;  // rate stays 1
     for (int k = 0; k <= kEdgeSamples; ++k) {
       const float x = float(k) / kEdgeSamples;
       pts[k] = displaced(m, disp, a, b, b, Vec3f(1 - x, x, 0));
@@ -232,7 +233,7 @@ EdgeTable edge_rates(const MeshData& m, const DisplacementFn& disp, const Dicing
 
 }  // namespace
 
-long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
+long long estimate_triangles(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d) {
   const EdgeTable t = edge_rates(base, disp, d);
   long long n = 0;
   for (size_t f = 0; f + 2 < base.indices.size(); f += 3) {
@@ -244,7 +245,7 @@ long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, c
   return n;
 }
 
-MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
+MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d, const VertexParamFn& params) {
   const EdgeTable t = edge_rates(base, disp, d);
   struct Origin {
     uint32_t a, b, c;
@@ -308,15 +309,29 @@ MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingPara
   m.material = base.material;
   m.positions.resize(verts.size());
   if (!base.uvs.empty()) m.uvs.resize(verts.size());
+  if (params) m.params.resize(verts.size());
   tbb::parallel_for(size_t(0), verts.size(), [&](size_t k) {
     const Origin& o = verts[k];
     m.positions[k] = displaced(base, disp, o.a, o.b, o.c, o.bary);
+    if (params) {
+      const Vec3f p = o.bary[0] * base.positions[o.a] + o.bary[1] * base.positions[o.b] + o.bary[2] * base.positions[o.c];
+      const Vec3f n = (o.bary[0] * base.normals[o.a] + o.bary[1] * base.normals[o.b] + o.bary[2] * base.normals[o.c]).normalized();
+      m.params[k] = params(p, n);
+    }
     if (!base.uvs.empty()) m.uvs[k] = o.bary[0] * base.uvs[o.a] + o.bary[1] * base.uvs[o.b] + o.bary[2] * base.uvs[o.c];
   });
   m.indices = std::move(indices);
   compute_vertex_normals(m);
   compute_tangents(m);
   return m;
+}
+
+long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
+  return estimate_triangles(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&) { return disp(uv, p); }), d);
+}
+
+MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
+  return dice(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&) { return disp(uv, p); }), d);
 }
 
 }  // namespace phellem

@@ -21,6 +21,9 @@ struct DicingParams {
   Vec3f camera_position{0, 0, 0};
   float pixel_angle = 1e-3f;  // radians subtended by one pixel of the dicing camera
   int max_rate = 256;         // segments per patch edge
+  // Crack-aware dicing: when set, an edge for which it returns false is not subdivided (the
+  // displacement cannot reach it), so only the surface near features is refined.
+  std::function<bool(const Vec3f& a, const Vec3f& b)> refine_edge;
 
   // Segments for an edge whose displaced polyline is `pts` (first..last inclusive).
   int edge_rate(const Vec3f* pts, int count) const;
@@ -43,6 +46,13 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d);
 
 // Displaced triangle mesh: each input triangle is a patch, displaced along the interpolated
 // normal by `disp` (metres). Requires normals; UVs are interpolated when present.
+// `params` (optional) gives each diced vertex MeshData::params from its undisplaced position
+// and normal (e.g. the crack depth for shading).
+using VertexParamFn = std::function<Vec2f(const Vec3f& p, const Vec3f& n)>;
+// A displacement that also takes the undisplaced unit normal.
+using SurfaceDisplacementFn = std::function<float(const Vec2f& uv, const Vec3f& p, const Vec3f& n)>;
+long long estimate_triangles(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d);
+MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d, const VertexParamFn& params = {});
 long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d);
 MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingParams& d);
 

@@ -17,6 +17,14 @@ RenderResult render_json(const std::string& json, int threads, const std::string
   return render_image(scene, Camera(d.camera, d.render.width, d.render.height), d.render.width, d.render.height, s);
 }
 
+bool interior_pixel(const Film& f, int x, int y) {
+  if (x < 1 || y < 1 || x + 1 >= f.width || y + 1 >= f.height) return false;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      if (f.beauty[(size_t(y + dy) * f.width + x + dx) * 4 + 3] != 1.0f) return false;
+  return true;
+}
+
 double mean_beauty(const Film& f, int c, float alpha) {
   double sum = 0;
   long n = 0;

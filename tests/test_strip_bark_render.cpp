@@ -102,10 +102,7 @@ TEST(StripBarkRender, DisplacementFollowsTheFieldDepthAndFillsTheCrackAov) {
   int cracked = 0, deep = 0;
   for (int y = 1; y < f.height - 1; ++y)
     for (int x = 1; x < f.width - 1; ++x) {
-      bool inside = true;  // keep silhouette pixels (partly sky) out
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) inside = inside && f.beauty[(size_t(y + dy) * f.width + x + dx) * 4 + 3] == 1.0f;
-      if (!inside) continue;
+      if (!test::interior_pixel(f, x, y)) continue;  // keep silhouette pixels (partly sky) out
       const size_t p = size_t(y) * f.width + x;
       const double r_hit = std::hypot(f.position[3 * p], f.position[3 * p + 2]);
       const double mask = f.crack[2 * p], depth = f.crack[2 * p + 1];

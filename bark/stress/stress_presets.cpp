@@ -35,9 +35,11 @@ std::optional<StressParams> stress_preset(const std::string& name) {
     row(250, 15, 2, 0.0, 0.1, 0.0);
     p.pattern = StressPattern::UniformTension;
   } else if (name == "woodification") {
-    // Deep interlaced vertical furrows (horizontal tension, as a growing trunk's girth).
-    row(150, 10, 3, 0.3, 0.25, 0.1);
+    // Long vertical furrows (horizontal tension, as a growing trunk's girth): a strong residual
+    // carries each crack on, rotations let neighbouring furrows wander into each other.
+    row(150, 10, 3, 0.6, 0.5, 0.1);
     p.pattern = StressPattern::Horizontal;
+    p.crack_rotation = 0.1;
   } else {
     return std::nullopt;
   }

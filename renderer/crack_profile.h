@@ -1,0 +1,62 @@
+// The cracks of a CrackedMesh as real geometry (Spicker 2014 sec. 4.2, done as displacement
+// in the path tracer instead of GPU tessellation): each crack edge carves a V-profile
+// ψ = D·(w − d)/w into the surface within its half-width w of it (d: distance to the edge),
+// w from the Algorithm 1 width of its ends, D growing with w, both modulated by noise. The
+// displacement is limited by a ray cast against the mesh so thin parts are never punched
+// through (the thesis's future work).
+#pragma once
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "bark/stress/cracked_mesh.h"
+#include "renderer/math.h"
+#include "renderer/stress_bark_desc.h"
+
+namespace phellem {
+
+class CrackProfile {
+ public:
+  CrackProfile(const bark::CrackedMesh& mesh, const CrackLook& look, uint32_t seed);
+
+  struct Sample {
+    float depth = 0;     // metres below the surface (≥ 0)
+    float relative = 0;  // depth / the look's max_depth, in [0, 1] (the crack AOV, darkening)
+    float mask = 0;      // 1 inside a crack's width
+  };
+  // At a point of the undisplaced surface with unit normal n (outwards).
+  Sample at(const Vec3f& p, const Vec3f& n) const;
+  // Whether any crack reaches the segment a–b (crack-aware dicing: elsewhere edges stay whole).
+  bool reaches(const Vec3f& a, const Vec3f& b) const;
+  float reach() const { return reach_; }
+  size_t segments() const { return seg_.size(); }
+
+ private:
+  struct Segment {
+    Vec3f a, b;
+    float wa, wb;  // half-widths at the ends (m), before noise
+  };
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Triangles = std::vector<K::Triangle_3>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+
+  int64_t cell_key(int x, int y, int z) const;
+  template <class F>
+  void for_near(const Vec3f& lo, const Vec3f& hi, F&& f) const;
+
+  CrackLook look_;
+  uint32_t seed_;
+  float reach_ = 0, cell_ = 1;
+  std::vector<Segment> seg_;
+  std::unordered_map<int64_t, std::vector<uint32_t>> grid_;
+  Triangles triangles_;
+  std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace phellem
