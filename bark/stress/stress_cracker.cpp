@@ -84,7 +84,12 @@ void StressCracker::crack_step() {
   std::vector<double> top(nv);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, nv, 512), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t k = r.begin(); k != r.end(); ++k) {
-      separation_[k] = separation_tensor(topology, forces_, uint32_t(k)) + residual_[k];  // eq. 4 (+ eq. 6 from the last iteration)
+      // Eq. 4 (+ eq. 6 from the last iteration), restricted to the tangent plane: on a curved
+      // surface the membrane forces have normal components (Laplace's pressure) that pull no
+      // crack open in the surface, and would otherwise dominate ς where curvature is high.
+      const Eigen::Vector3d n = mesh_.vertex_normal(VertexId(static_cast<SurfaceMesh::size_type>(k)));
+      const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - n * n.transpose();
+      separation_[k] = P * (separation_tensor(topology, forces_, uint32_t(k)) + residual_[k]) * P;
       residual_[k].setZero();
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
       es.computeDirect(separation_[k], Eigen::EigenvaluesOnly);
