@@ -79,7 +79,7 @@ TEST_P(ImageRegression, MatchesReference) {
   EXPECT_LT(err, kTolerance);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::Values("spheres_env", "box_area_light", "displaced_trunk", "strip_tree"));
+INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::Values("spheres_env", "box_area_light", "displaced_trunk", "strip_tree", "stress_trunk"));
 
 }  // namespace
 }  // namespace phellem
