@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "bark/geometry/procedural_meshes.h"
+#include "renderer/displacement.h"
 #include "renderer/mesh_io.h"
+#include "renderer/tree_surface.h"
 
 namespace phellem {
 
@@ -37,6 +39,24 @@ bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
 
 bark::TriMesh object_trimesh(const ObjectDesc& o) {
   bark::TriMesh t;
+  if (o.type == ObjectType::Tree) {
+    // The trunk and branches (with the tree's own displacement), each diced in object space to
+    // edges of the preprocessing length (default: a hundredth of the trunk's circumference).
+    const std::vector<TreePart> parts = build_tree(o.tree, make_displacement(o.tree.displacement));
+    DicingParams d;
+    d.screen_space = false;
+    d.target = o.stress_bark && o.stress_bark->preprocess.edge_length > 0 ? o.stress_bark->preprocess.edge_length
+                                                                          : 2 * double(kPi) * o.tree.radius.front() / 100;
+    for (const TreePart& part : parts) {
+      const MeshData m = dice(part.surface, d);
+      const uint32_t base = uint32_t(t.positions.size());
+      for (const Vec3f& p : m.positions) t.positions.push_back(p.cast<double>());
+      for (size_t k = 0; k < m.positions.size(); ++k)
+        t.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
+      for (size_t k = 0; k + 2 < m.indices.size(); k += 3) t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
+    }
+    return t;  // trees carry no transform
+  }
   if (o.procedural) {
     t = procedural_trimesh(*o.procedural);
   } else {

@@ -234,6 +234,31 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     float crack_darkening = -1;
   };
   std::vector<DicedJob> jobs;
+  // Stress bark (mesh or tree): crack the object's mesh (unless given), then displace the
+  // V-profiles of its cracks as real geometry, diced only where the cracks reach.
+  auto add_stress_job = [&](const ObjectDesc& o, size_t oi, int mat, int object_id) {
+    std::shared_ptr<const bark::CrackedMesh> cracked;
+    if (auto it = opts.cracked.find(oi); it != opts.cracked.end()) {
+      cracked = it->second;
+    } else {
+      const auto tb = Clock::now();
+      cracked = run_stress_object(desc, oi, std::nullopt, opts.progress).cracked;
+      opts.cracked[oi] = cracked;
+      opts.bark_seconds += seconds_since(tb);
+    }
+    MeshData base = to_mesh_data(cracked->mesh);
+    compute_vertex_normals(base);
+    auto profile = std::make_shared<const CrackProfile>(*cracked, o.stress_bark->look, uint32_t(o.stress_bark->params.seed));
+    DicedJob j{&o, mat, object_id, {}, std::make_shared<MeshData>(std::move(base)), nullptr, nullptr};
+    j.crack_disp = [profile](const Vec2f&, const Vec3f& p, const Vec3f& n) { return -profile->at(p, n).depth; };
+    j.crack_params = [profile](const Vec3f& p, const Vec3f& n) {
+      const CrackProfile::Sample s = profile->at(p, n);
+      return Vec2f(s.relative, s.mask);
+    };
+    if (tess.crack_aware) j.refine = [profile](const Vec3f& a, const Vec3f& b) { return profile->reaches(a, b); };
+    j.crack_darkening = o.stress_bark->look.darkening;
+    jobs.push_back(std::move(j));
+  };
   std::map<std::string, int> prototype_of_file;
   std::map<std::string, std::pair<LoadedModel, int>> models;  // file -> (model, first material index)
 
@@ -270,6 +295,10 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
         add_top(plane_mesh(o), mat, object_id);
         break;
       case ObjectType::Tree: {
+        if (o.stress_bark) {
+          add_stress_job(o, oi, mat, object_id);
+          break;
+        }
         const DisplacementFn disp = make_displacement(o.tree.displacement);
         if (!o.tree.strip_bark) {
           for (auto& part : build_tree(o.tree, disp)) jobs.push_back({&o, mat, object_id, part.surface, nullptr, nullptr, nullptr});
@@ -301,29 +330,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
       }
       case ObjectType::Mesh: {
         if (o.stress_bark) {
-          // Stress bark: crack the mesh (unless given), then displace the V-profiles of its
-          // cracks as real geometry, diced only where the cracks reach.
-          std::shared_ptr<const bark::CrackedMesh> cracked;
-          if (auto it = opts.cracked.find(oi); it != opts.cracked.end()) {
-            cracked = it->second;
-          } else {
-            const auto tb = Clock::now();
-            cracked = run_stress_object(desc, oi, std::nullopt, opts.progress).cracked;
-            opts.cracked[oi] = cracked;
-            opts.bark_seconds += seconds_since(tb);
-          }
-          MeshData base = to_mesh_data(cracked->mesh);
-          compute_vertex_normals(base);
-          auto profile = std::make_shared<const CrackProfile>(*cracked, o.stress_bark->look, uint32_t(o.stress_bark->params.seed));
-          DicedJob j{&o, mat, object_id, {}, std::make_shared<MeshData>(std::move(base)), nullptr, nullptr};
-          j.crack_disp = [profile](const Vec2f&, const Vec3f& p, const Vec3f& n) { return -profile->at(p, n).depth; };
-          j.crack_params = [profile](const Vec3f& p, const Vec3f& n) {
-            const CrackProfile::Sample s = profile->at(p, n);
-            return Vec2f(s.relative, s.mask);
-          };
-          if (tess.crack_aware) j.refine = [profile](const Vec3f& a, const Vec3f& b) { return profile->reaches(a, b); };
-          j.crack_darkening = o.stress_bark->look.darkening;
-          jobs.push_back(std::move(j));
+          add_stress_job(o, oi, mat, object_id);
           break;
         }
         if (o.procedural) {

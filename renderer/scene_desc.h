@@ -163,7 +163,8 @@ struct ObjectDesc {
   // mesh
   std::string file;  // empty for a procedural mesh
   std::optional<ProceduralMeshDesc> procedural;
-  // mesh: `"bark": {"model": "stress", ...}` (the stress-field cracking model)
+  // mesh or tree: `"bark": {"model": "stress", ...}` (the stress-field cracking model; a tree
+  // is tessellated into one triangle mesh of its trunk and branches first)
   std::shared_ptr<const StressBarkDesc> stress_bark;
   TransformDesc transform;
   DisplacementDesc displacement;

@@ -360,7 +360,7 @@ ProceduralMeshDesc parse_procedural(JsonObject o) {
   return p;
 }
 
-TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed) {
+TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed, std::shared_ptr<const StressBarkDesc>* stress) {
   TreeDesc t;
   auto axis = o.at("axis");
   for (auto& p : axis.array()) t.axis.push_back(p.vec3());
@@ -374,8 +374,10 @@ TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed) {
   if (auto v = o.get("uv_repeat")) t.uv_repeat = v->positive();
   if (auto v = o.get("bark")) {
     JsonObject bo = v->object();
-    if (bo.string("model", "") == "stress") bo.fail("model", "the stress model on trees is not supported yet: tessellate the tree into a mesh (glTF) and give the mesh object \"bark\": {\"model\": \"stress\"}");
-    t.strip_bark = std::make_shared<StripBarkDesc>(parse_strip_bark(v->object(), c.base_dir.string(), seed));
+    if (bo.string("model", "") == "stress")
+      *stress = std::make_shared<StressBarkDesc>(parse_stress_bark(v->object(), c.base_dir.string(), seed));
+    else
+      t.strip_bark = std::make_shared<StripBarkDesc>(parse_strip_bark(v->object(), c.base_dir.string(), seed));
   }
   return t;
 }
@@ -432,7 +434,7 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
     }
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
-    d.tree = parse_tree(c, o, scene.render.seed);
+    d.tree = parse_tree(c, o, scene.render.seed, &d.stress_bark);
   } else {
     o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, mesh, tree");
   }

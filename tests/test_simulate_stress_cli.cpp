@@ -118,3 +118,25 @@ TEST(SimulateStressCli, BadSettingsAndMeshesAreRefusedAndOutputsKept) {
 }
 
 }  // namespace phellem
+
+namespace phellem {
+
+TEST(SimulateStressCli, TreeObjectsAreTessellatedAndCracked) {
+  // A trunk and a branch: one welded mesh per part, cracked together; UVs come along.
+  const std::string dir = test::temp_dir("stress_tree");
+  test::write_text(dir + "/scene.json", R"({"render": {"seed": 2}, "objects": [{"type": "tree", "name": "t",
+      "axis": [[0, 0, 0], [0, 0.5, 0]], "radius": [0.06, 0.05],
+      "branches": [{"attach": 0.6, "length": 0.2, "radius": [0.025, 0.02]}],
+      "bark": {"model": "stress", "preset": "pine", "iterations": 20, "preprocess": {"edge_length": 0.01}}}]})");
+  const auto r = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const bark::CrackedMesh c = read_cracked_glb(dir + "/out/t.glb");
+  EXPECT_FALSE(c.crack_edges.empty());
+  EXPECT_EQ(c.mesh.uvs.size(), c.mesh.positions.size());
+  // Both parts are there: vertices on the trunk (|x|, |z| ≤ 0.06) and out on the branch.
+  double far = 0;
+  for (const auto& p : c.mesh.positions) far = std::max(far, std::hypot(p.x(), p.z()));
+  EXPECT_GT(far, 0.1);
+}
+
+}  // namespace phellem

@@ -87,7 +87,12 @@ void StressCracker::crack_step() {
       // Eq. 4 (+ eq. 6 from the last iteration), restricted to the tangent plane: on a curved
       // surface the membrane forces have normal components (Laplace's pressure) that pull no
       // crack open in the surface, and would otherwise dominate ς where curvature is high.
-      const Eigen::Vector3d n = mesh_.vertex_normal(VertexId(static_cast<SurfaceMesh::size_type>(k)));
+      Eigen::Vector3d n = Eigen::Vector3d::Zero();  // area-weighted, as StressMesh::vertex_normal
+      for (uint32_t i = topology.vertex_begin[k]; i < topology.vertex_begin[k + 1]; ++i) {
+        const FaceState& f = mesh_.face(FaceId(topology.vertex_slots[i] / 3));
+        n += f.area * f.normal;
+      }
+      n = n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::UnitZ();
       const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - n * n.transpose();
       separation_[k] = P * (separation_tensor(topology, forces_, uint32_t(k)) + residual_[k]) * P;
       residual_[k].setZero();

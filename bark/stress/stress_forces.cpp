@@ -43,7 +43,10 @@ void compute_forces(const StressMesh& m, const StressTopology& t, ForceField& ou
       const FaceId f(static_cast<SurfaceMesh::size_type>(k));
       if (split) {
         const auto [plus, minus] = split_stress(m.face(f).sigma);
-        const auto fp = nodal_forces(m, f, plus), fm = nodal_forces(m, f, minus);
+        // (A face in pure tension or pure compression is common: skip the zero half.)
+        const std::array<Eigen::Vector3d, 3> zero{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+        const auto fp = plus.isZero(0) ? zero : nodal_forces(m, f, plus);
+        const auto fm = minus.isZero(0) ? zero : nodal_forces(m, f, minus);
         for (size_t i = 0; i < 3; ++i) {
           out.tensile[3 * k + i] = fp[i];
           out.compressive[3 * k + i] = fm[i];
