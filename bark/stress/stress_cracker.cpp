@@ -107,7 +107,7 @@ void StressCracker::crack_step() {
   std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
   for (size_t k = 0; k < nv; ++k)
     if (top[k] > tau_) queue.emplace(top[k], uint32_t(k));
-  std::vector<char> cracked(nv, 0);
+  std::vector<char> cracked(nv, 0);  // tried this iteration (1), and cracked (2)
   int made = 0;
   StreamRng rng(params_.seed ^ 0x637261636bULL, uint64_t(stats_.iterations), 0);
   while (!queue.empty() && made < params_.cracks_per_iteration) {
@@ -127,6 +127,7 @@ void StressCracker::crack_step() {
     const auto sides = insert_crack(mesh_, v, dir, insert_);
     cracked[vi] = 1;
     if (!sides[0].added && !sides[1].added) continue;
+    cracked[vi] = 2;
     ++made;
     ++stats_.cracks;
     // New vertices: their separation tensor interpolates the split edge's ends.
@@ -148,11 +149,11 @@ void StressCracker::crack_step() {
       if (!cracked[t])
         if (const double lt = largest(separation_[t]).first; lt > tau_) queue.emplace(lt, uint32_t(t));
     }
-    residual_[vi].setZero();
   }
-  // Residuals of tips that cracked this iteration are spent.
+  // Residuals of vertices that cracked this iteration are spent; a tip that did not crack
+  // keeps its residual for the next iteration (eq. 6).
   for (size_t k = 0; k < cracked.size(); ++k)
-    if (cracked[k]) residual_[k].setZero();
+    if (cracked[k] == 2) residual_[k].setZero();
 }
 
 void StressCracker::iterate() {
