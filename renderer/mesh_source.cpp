@@ -5,6 +5,7 @@
 
 #include "bark/geometry/procedural_meshes.h"
 #include "renderer/displacement.h"
+#include "renderer/errors.h"
 #include "renderer/mesh_io.h"
 #include "renderer/tree_surface.h"
 
@@ -47,6 +48,12 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
     d.screen_space = false;
     d.target = o.stress_bark && o.stress_bark->preprocess.edge_length > 0 ? o.stress_bark->preprocess.edge_length
                                                                           : 2 * double(kPi) * o.tree.radius.front() / 100;
+    long long estimate = 0;
+    for (const TreePart& part : parts) estimate += estimate_triangles(part.surface, d);
+    if (estimate > 20'000'000)
+      throw UserError(o.where.file, o.where.path + "/bark/preprocess/edge_length",
+                      "an edge length of " + std::to_string(d.target) + " m would dice the tree into about " + std::to_string(estimate) +
+                          " triangles; at most 20000000 are allowed");
     for (const TreePart& part : parts) {
       const MeshData m = dice(part.surface, d);
       const uint32_t base = uint32_t(t.positions.size());

@@ -36,6 +36,7 @@ StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint
       }
       return bark::StressMesh::from(input);
     } catch (const bark::MeshError& e) {
+      if (e.where == "edge_length") throw UserError(desc.file, where + "/bark/preprocess/edge_length", e.what());
       if (obj.file.empty()) throw UserError(desc.file, where + "/procedural", e.where + ": " + e.what());
       throw UserError(obj.file, e.where, e.what());
     }

@@ -140,3 +140,22 @@ TEST(SimulateStressCli, TreeObjectsAreTessellatedAndCracked) {
 }
 
 }  // namespace phellem
+
+namespace phellem {
+
+TEST(SimulateStressCli, AnEdgeLengthThatWouldExplodeTheMeshIsRefused) {
+  const std::string dir = test::temp_dir("stress_edge");
+  test::write_text(dir + "/scene.json", scene_with(R"({"type": "mesh", "name": "m", "procedural": {"shape": "trunk", "triangles": 500},
+      "bark": {"model": "stress", "preprocess": {"edge_length": 0.00001}}})"));
+  const auto r = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("/objects/0/bark/preprocess/edge_length"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("at most 20000000"), std::string::npos) << r.output;
+  test::write_text(dir + "/scene.json", R"({"objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 1, 0]], "radius": 0.1,
+      "bark": {"model": "stress", "preprocess": {"edge_length": 0.00001}}}]})");
+  const auto t = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out --quiet");
+  EXPECT_EQ(t.exit_code, 2);
+  EXPECT_NE(t.output.find("/objects/0/bark/preprocess/edge_length"), std::string::npos) << t.output;
+}
+
+}  // namespace phellem

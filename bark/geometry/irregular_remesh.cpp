@@ -55,6 +55,13 @@ TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o) {
   }
   mean_edge /= double(std::max<size_t>(1, src.number_of_edges()));
   const double target = o.edge_length > 0 ? o.edge_length : mean_edge;
+  // Equilateral triangles of side `target` over the surface: refuse a size that would not fit.
+  double area = 0;
+  for (FaceId f : src.faces()) area += source.face(f).area;
+  const double expected = area / (0.4330127 * target * target);
+  if (expected > double(kMaxRemeshTriangles))
+    throw MeshError("edge_length", "an edge length of " + std::to_string(target) + " m would make about " + std::to_string(static_cast<long long>(expected)) +
+                                " triangles; at most " + std::to_string(kMaxRemeshTriangles) + " are allowed (use a longer edge_length)");
   // Patches: faces connected without crossing a constrained edge (UV charts); the remesher
   // keeps them up to date as it makes new faces.
   auto patch = sm.add_property_map<FaceId, int>("f:patch", -1).first;

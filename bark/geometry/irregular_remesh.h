@@ -21,7 +21,10 @@ struct RemeshOptions {
   uint64_t seed = 1;
 };
 
-// Throws MeshError (bark/stress/stress_mesh.h) for a mesh that cannot be processed.
+inline constexpr long long kMaxRemeshTriangles = 20'000'000;
+
+// Throws MeshError (bark/stress/stress_mesh.h) for a mesh that cannot be processed, or (where
+// "edge_length") when the edge length would make more than kMaxRemeshTriangles triangles.
 TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o);
 
 }  // namespace phellem::bark
