@@ -250,12 +250,18 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     compute_vertex_normals(base);
     auto profile = std::make_shared<const CrackProfile>(*cracked, o.stress_bark->look, uint32_t(o.stress_bark->params.seed));
     DicedJob j{&o, mat, object_id, {}, std::make_shared<MeshData>(std::move(base)), nullptr, nullptr};
-    j.crack_disp = [profile](const Vec2f&, const Vec3f& p, const Vec3f& n) { return -profile->at(p, n).depth; };
+    // A mesh's own procedural displacement adds to the cracks (a tree's is already in its mesh);
+    // it reaches everywhere, so the dicing is then uniform.
+    const bool extra = o.type == ObjectType::Mesh && o.displacement.type != DisplacementDesc::Type::None;
+    const DisplacementFn own = extra ? make_displacement(o.displacement) : DisplacementFn{};
+    j.crack_disp = [profile, own](const Vec2f& uv, const Vec3f& p, const Vec3f& n) {
+      return (own ? own(uv, p) : 0.0f) - profile->at(p, n).depth;
+    };
     j.crack_params = [profile](const Vec3f& p, const Vec3f& n) {
       const CrackProfile::Sample s = profile->at(p, n);
       return Vec2f(s.relative, s.mask);
     };
-    if (tess.crack_aware) j.refine = [profile](const Vec3f& a, const Vec3f& b) { return profile->reaches(a, b); };
+    if (tess.crack_aware && !extra) j.refine = [profile](const Vec3f& a, const Vec3f& b) { return profile->reaches(a, b); };
     j.crack_darkening = o.stress_bark->look.darkening;
     jobs.push_back(std::move(j));
   };
