@@ -77,7 +77,10 @@ void StressCracker::apply_growth_hooks() {
 void StressCracker::crack_step() {
   SurfaceMesh& g = mesh_.mesh();
   const size_t nv = g.number_of_vertices();
-  const StressTopology topology = StressTopology::build(mesh_);
+  // The mesh has not changed since the last relaxation built its topology (growth hooks
+  // change stresses only).
+  if (topology_.faces() != g.number_of_faces() || topology_.vertices() != nv) topology_ = StressTopology::build(mesh_);
+  const StressTopology& topology = topology_;
   compute_forces(mesh_, topology, forces_);
   separation_.resize(nv);
   residual_.resize(nv, Eigen::Matrix3d::Zero());
@@ -159,12 +162,12 @@ void StressCracker::crack_step() {
 void StressCracker::iterate() {
   apply_growth_hooks();
   crack_step();
+  topology_ = StressTopology::build(mesh_);  // the crack step changed the mesh
   if (params_.relaxations_per_iteration > 0) {
-    const StressTopology topology = StressTopology::build(mesh_);
-    const std::vector<double> stiffness = vertex_stiffness(mesh_, topology);
+    const std::vector<double> stiffness = vertex_stiffness(mesh_, topology_);
     for (int r = 0; r < params_.relaxations_per_iteration; ++r) {
-      compute_forces(mesh_, topology, forces_, false);
-      relax(mesh_, topology, forces_, params_.time_step, &displacement_, &stiffness);
+      compute_forces(mesh_, topology_, forces_, false);
+      relax(mesh_, topology_, forces_, params_.time_step, &displacement_, &stiffness);
     }
   }
   ++stats_.iterations;

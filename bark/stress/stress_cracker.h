@@ -18,6 +18,7 @@
 #include "bark/stress/stress_forces.h"
 #include "bark/stress/stress_mesh.h"
 #include "bark/stress/stress_params.h"
+#include "bark/stress/stress_topology.h"
 
 namespace phellem::bark {
 
@@ -59,6 +60,9 @@ class StressCracker {
   double tau_ = 0;
   CrackInsertOptions insert_;
   ForceField forces_;
+  // Connectivity of the mesh as of the last crack step (a crack step only ever adds faces
+  // and vertices, so matching counts mean it is current).
+  StressTopology topology_;
   std::vector<Eigen::Matrix3d> separation_, residual_;  // per vertex
   std::vector<Eigen::Vector3d> displacement_;            // per vertex
   mutable StressStats stats_;
