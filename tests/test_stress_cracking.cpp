@@ -274,3 +274,22 @@ TEST(IrregularRemesh, KeepsTheUVSeamOfACylinder) {
   EXPECT_GT(seam_low, 0);
   EXPECT_GT(seam_high, 0);
 }
+
+TEST(StressCracker, UVStrokesAndImagesNeedTextureCoordinates) {
+  TriMesh sheet = jittered_sheet(6, 6, 1.0, 1.0, 0.2, 1);
+  sheet.uvs.clear();
+  StressParams p = sheet_params(StressPattern::Strokes);
+  StressStroke s;
+  s.points = {{0.2, 0.2, 0}, {0.8, 0.8, 0}};
+  p.strokes = {s};
+  try {
+    StressCracker c(StressMesh::from(sheet), p);
+    ADD_FAILURE() << "a UV stroke on a mesh without UVs was accepted";
+  } catch (const StressParamError& e) {
+    EXPECT_EQ(e.key, "strokes");
+  }
+  p.strokes[0].in_uv = false;  // the same stroke as 3D points is fine
+  StressCracker ok(StressMesh::from(sheet), p);
+  ok.run();
+  EXPECT_GT(ok.stats().crack_edges, 0);
+}

@@ -36,6 +36,11 @@ double CrackedMesh::crack_length() const {
 
 StressCracker::StressCracker(StressMesh mesh, StressParams params) : mesh_(std::move(mesh)), params_(std::move(params)) {
   if (auto e = validate(params_)) throw *e;
+  if (!mesh_.has_uvs()) {  // what lives in UV space needs texture coordinates
+    if (!params_.image.empty()) throw StressParamError{"stress_image", "needs a mesh with texture coordinates (this one has none)"};
+    for (const StressStroke& s : params_.strokes)
+      if (s.in_uv) throw StressParamError{"strokes", "a \"uv\" stroke needs a mesh with texture coordinates (this one has none); give 3D \"points\""};
+  }
   const SurfaceMesh& g = mesh_.mesh();
   double mean_edge = 0;
   for (EdgeId e : g.edges()) mean_edge += (mesh_.point(g.vertex(e, 0)) - mesh_.point(g.vertex(e, 1))).norm();

@@ -32,7 +32,8 @@ struct StressStats {
 
 class StressCracker {
  public:
-  // Throws StressParamError for a parameter out of range.
+  // Throws StressParamError for a parameter out of range, or a UV stroke or stress image on a
+  // mesh without texture coordinates.
   StressCracker(StressMesh mesh, StressParams params);
 
   void iterate();
