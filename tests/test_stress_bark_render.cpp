@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "render_helpers.h"
+#include "renderer/crack_profile.h"
 #include "renderer/render_scene.h"
 #include "renderer/scene_parser.h"
 
@@ -77,4 +78,39 @@ TEST(StressBarkRender, CrackAwareDicingRefinesOnlyNearTheCracks) {
   const long long aware = diced(true), uniform = diced(false);
   EXPECT_GT(aware, 20000);            // the cracks were refined
   EXPECT_LT(aware * 2, uniform);      // but not the rest of the trunk
+}
+
+TEST(CrackProfile, NeverDeeperThanAFractionOfTheLocalThickness) {
+  // A closed slab 4 mm thick with a crack edge across its top face: the V-profile would carve
+  // 1 cm, but the ray cast limits it to 45 % of the thickness; on a thick slab it is not limited.
+  auto slab = [](double thickness) {
+    bark::CrackedMesh c;
+    const double h = thickness;
+    c.mesh.positions = {{-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0}, {-0.05, 0.05, 0},
+                        {-0.05, -0.05, -h}, {0.05, -0.05, -h}, {0.05, 0.05, -h}, {-0.05, 0.05, -h},
+                        {0.0, -0.05, 0}, {0.0, 0.05, 0}};  // 8, 9: the crack's ends on the top face
+    c.mesh.triangles = {{0, 8, 9}, {0, 9, 3}, {8, 1, 2}, {8, 2, 9},  // top (+z), split along x = 0
+                        {4, 6, 5}, {4, 7, 6},                          // bottom
+                        {0, 4, 5}, {0, 5, 8}, {8, 5, 1}, {1, 5, 6}, {1, 6, 2}, {2, 6, 7}, {2, 7, 9}, {9, 7, 3}, {3, 7, 4}, {3, 4, 0}};
+    c.crack_edges = {{8, 9}};
+    c.crack_width.assign(c.mesh.positions.size(), 0.0f);
+    c.crack_width[8] = c.crack_width[9] = 4;  // wide: half-width at the cap
+    c.component.assign(c.mesh.positions.size(), -1);
+    c.component[8] = c.component[9] = 0;
+    c.displacement.assign(c.mesh.positions.size(), Eigen::Vector3f::Zero());
+    return c;
+  };
+  CrackLook look;
+  look.width_per_edge = 0.003f;
+  look.max_width = 0.006f;
+  look.depth_per_width = 2.0f;
+  look.max_depth = 0.01f;
+  look.noise = 0;
+  const Vec3f on_crack(0.0f, 0.0f, 0.0f), up(0, 0, 1);
+  const CrackProfile thin(slab(0.004), look, 1), thick(slab(0.1), look, 1);
+  EXPECT_NEAR(thick.at(on_crack, up).depth, 0.01f, 1e-6f);     // min(max_depth, 2 × 6 mm)
+  EXPECT_NEAR(thin.at(on_crack, up).depth, 0.45f * 0.004f, 2e-5f);
+  // Away from the crack, nothing; half-way across its width, half the depth (V-profile).
+  EXPECT_EQ(thick.at(Vec3f(0.02f, 0, 0), up).depth, 0.0f);
+  EXPECT_NEAR(thick.at(Vec3f(0.003f, 0, 0), up).depth, 0.005f, 1e-5f);
 }
