@@ -53,7 +53,7 @@ std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>> uv_tangents(const Str
 }
 
 // Point q projected to the nearest face (closest centroid; faces are small next to strokes).
-FaceId nearest_face(const StressMesh& m, const std::vector<Eigen::Vector3d>& centroids, const Eigen::Vector3d& q) {
+FaceId nearest_face(const std::vector<Eigen::Vector3d>& centroids, const Eigen::Vector3d& q) {
   double best = std::numeric_limits<double>::infinity();
   size_t bi = 0;
   for (size_t k = 0; k < centroids.size(); ++k)
@@ -61,7 +61,6 @@ FaceId nearest_face(const StressMesh& m, const std::vector<Eigen::Vector3d>& cen
       best = d;
       bi = k;
     }
-  (void)m;
   return FaceId(static_cast<SurfaceMesh::size_type>(bi));
 }
 
@@ -112,7 +111,7 @@ std::vector<FaceId> stroke_faces(const StressMesh& m, const StressStroke& s) {
             break;
           }
       } else {
-        f = nearest_face(m, centroids, q);
+        f = nearest_face(centroids, q);
       }
       if (f != SurfaceMesh::null_face() && (out.empty() || out.back() != f)) out.push_back(f);
     }
