@@ -226,10 +226,9 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     std::shared_ptr<const MeshData> base;
     DisplacementFn disp;
     std::shared_ptr<const bark::BarkSurface> bark;
-    // Stress-bark cracks: the V-profiles (SurfaceDisplacementFn), per-vertex shading params,
-    // the crack-aware dicing predicate and the depth darkening.
+    // Stress-bark cracks: the V-profiles with per-vertex shading params (normalized depth,
+    // mask), the crack-aware dicing predicate and the depth darkening.
     SurfaceDisplacementFn crack_disp = {};
-    VertexParamFn crack_params = {};
     std::function<bool(const Vec3f&, const Vec3f&)> refine = {};
     float crack_darkening = -1;
   };
@@ -254,12 +253,10 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     // it reaches everywhere, so the dicing is then uniform.
     const bool extra = o.type == ObjectType::Mesh && o.displacement.type != DisplacementDesc::Type::None;
     const DisplacementFn own = extra ? make_displacement(o.displacement) : DisplacementFn{};
-    j.crack_disp = [profile, own](const Vec2f& uv, const Vec3f& p, const Vec3f& n) {
-      return (own ? own(uv, p) : 0.0f) - profile->at(p, n).depth;
-    };
-    j.crack_params = [profile](const Vec3f& p, const Vec3f& n) {
+    j.crack_disp = [profile, own](const Vec2f& uv, const Vec3f& p, const Vec3f& n, Vec2f* params) {
       const CrackProfile::Sample s = profile->at(p, n);
-      return Vec2f(s.relative, s.mask);
+      if (params) *params = Vec2f(s.relative, s.mask);
+      return (own ? own(uv, p) : 0.0f) - s.depth;
     };
     if (tess.crack_aware && !extra) j.refine = [profile](const Vec3f& a, const Vec3f& b) { return profile->reaches(a, b); };
     j.crack_darkening = o.stress_bark->look.darkening;
@@ -434,7 +431,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     for (const auto& j : jobs) {
       DicingParams dj = dicing;
       dj.refine_edge = j.refine;
-      MeshData m = !j.base ? dice(j.surface, dicing) : j.crack_disp ? dice(*j.base, j.crack_disp, dj, j.crack_params) : dice(*j.base, j.disp, dicing);
+      MeshData m = !j.base ? dice(j.surface, dicing) : j.crack_disp ? dice(*j.base, j.crack_disp, dj, true) : dice(*j.base, j.disp, dicing);
       stats_.diced_triangles += m.triangle_count();
       stats_.diced_bytes += m.memory_bytes();
       add_top(std::move(m), j.material, j.object_id, j.bark, j.crack_darkening);

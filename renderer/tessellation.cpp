@@ -201,12 +201,13 @@ struct EdgeTable {
   std::vector<int> rate;
 };
 
-Vec3f displaced(const MeshData& m, const SurfaceDisplacementFn& disp, uint32_t a, uint32_t b, uint32_t c, const Vec3f& bary) {
+Vec3f displaced(const MeshData& m, const SurfaceDisplacementFn& disp, uint32_t a, uint32_t b, uint32_t c, const Vec3f& bary,
+                Vec2f* params = nullptr) {
   const Vec3f p = bary[0] * m.positions[a] + bary[1] * m.positions[b] + bary[2] * m.positions[c];
   const Vec3f n = (bary[0] * m.normals[a] + bary[1] * m.normals[b] + bary[2] * m.normals[c]).normalized();
   Vec2f uv = Vec2f::Zero();
   if (!m.uvs.empty()) uv = bary[0] * m.uvs[a] + bary[1] * m.uvs[b] + bary[2] * m.uvs[c];
-  return p + n * disp(uv, p, n);
+  return p + n * disp(uv, p, n, params);
 }
 
 EdgeTable edge_rates(const MeshData& m, const SurfaceDisplacementFn& disp, const DicingParams& d) {
@@ -245,7 +246,7 @@ long long estimate_triangles(const MeshData& base, const SurfaceDisplacementFn& 
   return n;
 }
 
-MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d, const VertexParamFn& params) {
+MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d, bool keep_params) {
   const EdgeTable t = edge_rates(base, disp, d);
   struct Origin {
     uint32_t a, b, c;
@@ -309,15 +310,10 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
   m.material = base.material;
   m.positions.resize(verts.size());
   if (!base.uvs.empty()) m.uvs.resize(verts.size());
-  if (params) m.params.resize(verts.size());
+  if (keep_params) m.params.resize(verts.size());
   tbb::parallel_for(size_t(0), verts.size(), [&](size_t k) {
     const Origin& o = verts[k];
-    m.positions[k] = displaced(base, disp, o.a, o.b, o.c, o.bary);
-    if (params) {
-      const Vec3f p = o.bary[0] * base.positions[o.a] + o.bary[1] * base.positions[o.b] + o.bary[2] * base.positions[o.c];
-      const Vec3f n = (o.bary[0] * base.normals[o.a] + o.bary[1] * base.normals[o.b] + o.bary[2] * base.normals[o.c]).normalized();
-      m.params[k] = params(p, n);
-    }
+    m.positions[k] = displaced(base, disp, o.a, o.b, o.c, o.bary, keep_params ? &m.params[k] : nullptr);
     if (!base.uvs.empty()) m.uvs[k] = o.bary[0] * base.uvs[o.a] + o.bary[1] * base.uvs[o.b] + o.bary[2] * base.uvs[o.c];
   });
   m.indices = std::move(indices);
@@ -327,11 +323,11 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
 }
 
 long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
-  return estimate_triangles(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&) { return disp(uv, p); }), d);
+  return estimate_triangles(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }), d);
 }
 
 MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
-  return dice(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&) { return disp(uv, p); }), d);
+  return dice(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }), d);
 }
 
 }  // namespace phellem

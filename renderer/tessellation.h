@@ -46,13 +46,12 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d);
 
 // Displaced triangle mesh: each input triangle is a patch, displaced along the interpolated
 // normal by `disp` (metres). Requires normals; UVs are interpolated when present.
-// `params` (optional) gives each diced vertex MeshData::params from its undisplaced position
-// and normal (e.g. the crack depth for shading).
-using VertexParamFn = std::function<Vec2f(const Vec3f& p, const Vec3f& n)>;
-// A displacement that also takes the undisplaced unit normal.
-using SurfaceDisplacementFn = std::function<float(const Vec2f& uv, const Vec3f& p, const Vec3f& n)>;
+// A displacement that also takes the undisplaced unit normal; when `params` is not null it
+// also writes the vertex's MeshData::params (e.g. the crack depth for shading) from the same
+// evaluation. dice() asks for them with `keep_params`.
+using SurfaceDisplacementFn = std::function<float(const Vec2f& uv, const Vec3f& p, const Vec3f& n, Vec2f* params)>;
 long long estimate_triangles(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d);
-MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d, const VertexParamFn& params = {});
+MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d, bool keep_params = false);
 long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d);
 MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingParams& d);
 
