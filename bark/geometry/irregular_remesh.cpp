@@ -107,8 +107,10 @@ TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o) {
     Tree all(faces(src).first, faces(src).second, src);
     all.accelerate_distance_queries();
     const double floor_angle = 25 * 3.141592653589793 / 180;
-    auto worst_around = [&](VertexId v) {
+    // The fan around v: its smallest angle and its faces' (unnormalized) normals.
+    auto fan = [&](VertexId v, std::vector<Eigen::Vector3d>& normals) {
       double worst = 1e9;
+      normals.clear();
       for (FaceId f : CGAL::faces_around_target(sm.halfedge(v), sm)) {
         if (f == SurfaceMesh::null_face()) continue;
         std::array<Eigen::Vector3d, 3> p;
@@ -117,32 +119,21 @@ TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o) {
         const Eigen::Vector3d a = p[1] - p[0], b = p[2] - p[0], c = p[2] - p[1];
         auto ang = [](const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return std::atan2(x.cross(y).norm(), x.dot(y)); };
         worst = std::min({worst, ang(a, b), ang(-a, c), ang(b, c)});
+        normals.push_back(a.cross(b));
       }
       return worst;
     };
-    auto normals_around = [&](VertexId v) {
-      std::vector<Eigen::Vector3d> n;
-      for (FaceId f : CGAL::faces_around_target(sm.halfedge(v), sm)) {
-        if (f == SurfaceMesh::null_face()) continue;
-        std::array<Eigen::Vector3d, 3> p;
-        int k = 0;
-        for (VertexId w : CGAL::vertices_around_face(sm.halfedge(f), sm)) p[size_t(k++)] = to_eigen(sm.point(w));
-        n.push_back((p[1] - p[0]).cross(p[2] - p[0]));
-      }
-      return n;
-    };
+    std::vector<Eigen::Vector3d> n_before, n_after;
     for (VertexId v : sm.vertices()) {
       if (fixed[v.idx()]) continue;
       StreamRng rng(o.seed ^ 0x6a6974ULL, v.idx(), 0);
       const Eigen::Vector3d old = to_eigen(sm.point(v));
       const Eigen::Vector3d offset(rng.symmetric(), rng.symmetric(), rng.symmetric());
-      const double before = worst_around(v);
-      const std::vector<Eigen::Vector3d> n_before = normals_around(v);
+      const double before = fan(v, n_before);
       const auto q = all.closest_point(StressKernel::Point_3(old.x() + o.jitter * target * offset.x(), old.y() + o.jitter * target * offset.y(),
                                                              old.z() + o.jitter * target * offset.z()));
       sm.point(v) = q;
-      const std::vector<Eigen::Vector3d> n_after = normals_around(v);
-      bool ok = worst_around(v) >= std::min(floor_angle, before);
+      bool ok = fan(v, n_after) >= std::min(floor_angle, before);
       for (size_t k = 0; ok && k < n_after.size(); ++k) ok = n_after[k].dot(n_before[k]) > 0.5 * n_after[k].norm() * n_before[k].norm();
       if (!ok) sm.point(v) = StressKernel::Point_3(old.x(), old.y(), old.z());
     }
