@@ -3,6 +3,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <array>
+
 namespace phellem::bark {
 
 std::vector<double> vertex_stiffness(const StressMesh& m, const StressTopology& t) {
@@ -31,11 +33,21 @@ void relax(StressMesh& m, const StressTopology& t, const ForceField& forces, dou
   tbb::parallel_for(tbb::blocked_range<size_t>(0, t.faces(), 256), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t f = r.begin(); f != r.end(); ++f) {
       FaceState& s = m.face(FaceId(static_cast<SurfaceMesh::size_type>(f)));
-      // Σ_m p_[m] β_m is the frame E (the vertices do not move); Σ_n Δp_n β_n its change.
-      Eigen::Matrix<double, 3, 2> dPB = Eigen::Matrix<double, 3, 2>::Zero();
-      for (int j = 0; j < 3; ++j) dPB += dp[t.face_vertices[f][size_t(j)]] * s.beta.row(j).head<2>();
-      const Eigen::Matrix2d G = dPB.transpose() * s.frame;
-      s.sigma += 0.5 * (G + G.transpose());  // eqs. 8–9
+      // Σ_m p_[m] β_m is the frame E (the vertices do not move); D = Σ_n Δp_n β_n its change.
+      // Written out in scalars: Eigen's 3×2 temporaries were stored and reloaded in halves
+      // (a store-forwarding stall per term; this loop was the simulation's hottest).
+      const std::array<uint32_t, 3>& fv = t.face_vertices[f];
+      const Eigen::Vector3d& d0 = dp[fv[0]];
+      const Eigen::Vector3d& d1 = dp[fv[1]];
+      const Eigen::Vector3d& d2 = dp[fv[2]];
+      double D[3][2];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 2; ++c) D[r][c] = d0[r] * s.beta(0, c) + d1[r] * s.beta(1, c) + d2[r] * s.beta(2, c);
+      double G[2][2];  // Dᵀ E
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) G[a][b] = D[0][a] * s.frame(0, b) + D[1][a] * s.frame(1, b) + D[2][a] * s.frame(2, b);
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) s.sigma(a, b) += 0.5 * (G[a][b] + G[b][a]);  // eqs. 8–9
     }
   });
   if (displacement) {
