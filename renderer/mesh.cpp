@@ -1,20 +1,48 @@
 #include "renderer/mesh.h"
 
+#include <array>
+#include <bit>
+#include <numeric>
+#include <unordered_map>
+
 namespace phellem {
 
-void compute_vertex_normals(MeshData& m) {
+namespace {
+struct FloatTripleHash {
+  size_t operator()(const std::array<float, 3>& p) const {
+    size_t h = 0;
+    for (float x : p) h = h * 0x9E3779B97F4A7C15ull + (x == 0 ? 0u : std::bit_cast<uint32_t>(x));  // -0 == 0
+    return h;
+  }
+};
+}  // namespace
+
+void compute_vertex_normals(MeshData& m, bool weld_by_position) {
+  // Each vertex accumulates into its representative: itself, or the first vertex at its position.
+  std::vector<uint32_t> rep(m.positions.size());
+  std::iota(rep.begin(), rep.end(), 0u);
+  if (weld_by_position) {
+    std::unordered_map<std::array<float, 3>, uint32_t, FloatTripleHash> first;
+    first.reserve(m.positions.size());
+    for (uint32_t i = 0; i < m.positions.size(); ++i) {
+      const Vec3f& p = m.positions[i];
+      rep[i] = first.try_emplace({p.x(), p.y(), p.z()}, i).first->second;
+    }
+  }
   std::vector<Vec3f> n(m.positions.size(), Vec3f::Zero());
   for (size_t f = 0; f + 2 < m.indices.size(); f += 3) {
     const uint32_t a = m.indices[f], b = m.indices[f + 1], c = m.indices[f + 2];
     const Vec3f fn = (m.positions[b] - m.positions[a]).cross(m.positions[c] - m.positions[a]);
-    n[a] += fn;
-    n[b] += fn;
-    n[c] += fn;
+    n[rep[a]] += fn;
+    n[rep[b]] += fn;
+    n[rep[c]] += fn;
   }
-  for (auto& v : n) {
-    const float l = v.norm();
-    v = l > 0 ? Vec3f(v / l) : Vec3f(0, 1, 0);
+  for (size_t i = 0; i < n.size(); ++i) {
+    if (rep[i] != i) continue;
+    const float l = n[i].norm();
+    n[i] = l > 0 ? Vec3f(n[i] / l) : Vec3f(0, 1, 0);
   }
+  for (size_t i = 0; i < n.size(); ++i) n[i] = n[rep[i]];
   m.normals = std::move(n);
 }
 

@@ -25,8 +25,10 @@ struct MeshData {
   }
 };
 
-// Area-weighted vertex normals from the faces (used after displacement).
-void compute_vertex_normals(MeshData& mesh);
+// Area-weighted vertex normals from the faces (used after displacement). With
+// `weld_by_position`, vertices at the same position (split at a UV seam) share one normal
+// from all their faces: the surface is smooth across the seam.
+void compute_vertex_normals(MeshData& mesh, bool weld_by_position = false);
 // Per-vertex tangents from UVs (for normal maps); no-op without UVs.
 void compute_tangents(MeshData& mesh);
 

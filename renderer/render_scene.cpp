@@ -246,7 +246,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
       opts.bark_seconds += seconds_since(tb);
     }
     MeshData base = to_mesh_data(cracked->mesh);
-    compute_vertex_normals(base);
+    compute_vertex_normals(base, true);  // one normal per position: seams shade (and displace) alike
     auto profile = std::make_shared<const CrackProfile>(*cracked, o.stress_bark->look, uint32_t(o.stress_bark->params.seed));
     DicedJob j{&o, mat, object_id, {}, std::make_shared<MeshData>(std::move(base)), nullptr, nullptr};
     // A mesh's own procedural displacement adds to the cracks (a tree's is already in its mesh);

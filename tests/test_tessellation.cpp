@@ -168,6 +168,69 @@ TEST(Tessellation, ObjectSpaceDicingHitsTheTargetEdgeLength) {
   EXPECT_LE(rs.stats().diced_triangles, 2 * 63 * 100 * 2);
 }
 
+// An open 12-sided prism of radius 1 and height 1 around y, its seam column duplicated (u = 0
+// and u = 1), with the given per-vertex normals (radial when `radial`, else left empty).
+MeshData prism(bool radial) {
+  MeshData m;
+  const int around = 12, along = 4;
+  for (int j = 0; j <= along; ++j)
+    for (int i = 0; i <= around; ++i) {
+      const float a = 2 * kPi * float(i % around) / around;
+      m.positions.emplace_back(std::cos(a), float(j) / along, std::sin(a));
+      m.uvs.emplace_back(float(i) / around, float(j) / along);
+      if (radial) m.normals.emplace_back(std::cos(a), 0.0f, std::sin(a));
+    }
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const uint32_t a = uint32_t(j * (around + 1) + i), b = a + 1, c = a + around + 1, d = c + 1;
+      m.indices.insert(m.indices.end(), {a, c, b, b, c, d});  // outward
+    }
+  return m;
+}
+
+TEST(Tessellation, DicedCoarseMeshShadesWithTheBaseNormalsAndTheDisplacementSlope) {
+  const MeshData base = prism(true);
+  DicingParams d;
+  d.screen_space = false;
+  d.target = 0.02f;
+  // Nothing displaced: every diced vertex has the base's interpolated normal (a diced patch
+  // shades like an undiced triangle, not as the flat facet its grid lies on).
+  const MeshData flat = dice(base, DisplacementFn([](const Vec2f&, const Vec3f&) { return 0.0f; }), d);
+  ASSERT_GT(flat.triangle_count(), 100 * base.triangle_count());
+  for (size_t k = 0; k < flat.positions.size(); ++k) {
+    const Vec3f& p = flat.positions[k];
+    // The interpolated normal is radial through the point's angle on the facet (for a point on a
+    // facet of this prism the blend of the two radial corner normals points through it).
+    const Vec3f radial = Vec3f(p.x(), 0, p.z()).normalized();
+    ASSERT_GT(flat.normals[k].dot(radial), 1 - 1e-5f) << "vertex " << k;
+  }
+  // Displacement a·sin(k y) along the normal: the surface r(y) = r₀ + a sin(k y) has the normal
+  // (1, −a k cos(k y)) / √(1 + (a k cos(k y))²) in the (radial, y) plane.
+  const float amp = 0.01f, freq = 6.0f;
+  const MeshData bumped = dice(base, DisplacementFn([&](const Vec2f&, const Vec3f& p) { return amp * std::sin(freq * p.y()); }), d);
+  int checked = 0;
+  for (size_t k = 0; k < bumped.positions.size(); ++k) {
+    const Vec3f& p = bumped.positions[k];
+    if (p.y() < 0.1f || p.y() > 0.9f) continue;  // the open ends have one-sided normals
+    const float slope = -amp * freq * std::cos(freq * p.y());
+    const float expected_y = slope / std::sqrt(1 + slope * slope);
+    ASSERT_NEAR(bumped.normals[k].y(), expected_y, 0.004f) << "at y = " << p.y();
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(Mesh, NormalsWeldedByPositionCloseTheUVSeam) {
+  MeshData m = prism(false);
+  compute_vertex_normals(m);
+  const size_t first = 13 * 2, last = first + 12;  // row 2: u = 0 and its copy at u = 1
+  ASSERT_EQ(m.positions[first], m.positions[last]);
+  EXPECT_LT(m.normals[first].dot(m.normals[last]), 0.99f) << "unwelded, each copy sees one side of the seam";
+  compute_vertex_normals(m, true);
+  EXPECT_EQ(m.normals[first], m.normals[last]);
+  EXPECT_GT(m.normals[first].dot(Vec3f(1, 0, 0)), 1 - 1e-6f);  // radial: both sides of the seam count
+}
+
 TEST(GeneralizedCylinder, RadiusAndFrameAreConsistent) {
   bark::GeneralizedCylinder c({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 2, 0)}, {0.5, 0.25});
   for (double s : {0.0, 0.3, 0.7, 1.0})

@@ -1,7 +1,8 @@
 // Preprocessing for the stress model (Spicker 2014 sec. 3.1.4: "regular meshes result in
 // unnatural regular crack patterns and pre-existing sliver triangles can pose problems"): an
 // isotropic remesh (CGAL) to well-shaped triangles of a target edge length, then a random
-// tangential jitter of the vertices, projected back onto the input surface. UV seams, sharp
+// tangential jitter of the vertices, projected back onto the input surface (onto the smooth
+// surface its triangles sample, not their flat facets). UV seams, sharp
 // edges and borders are kept as constrained polylines, and each new corner takes its UV from
 // the input face of its own UV chart that it projects onto, so seams stay seams and textures
 // do not slide.
@@ -18,6 +19,7 @@ struct RemeshOptions {
   double jitter = 0.3;        // tangential jitter, fraction of the edge length
   double sharp_angle_deg = 60;  // dihedral angles sharper than this are kept as features
   int iterations = 3;
+  bool smooth = true;  // move the vertices onto the smooth (Phong, α = ½) surface of the input's triangles
   uint64_t seed = 1;
 };
 
