@@ -78,7 +78,8 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
     else if (s == "mixed") p.pattern = bark::StressPattern::Mixed;
     else if (s == "image") p.pattern = bark::StressPattern::Image;
     else if (s == "strokes") p.pattern = bark::StressPattern::Strokes;
-    else v->fail("unknown stress pattern \"" + s + "\"; allowed: uniform, horizontal, vertical, mixed, image, strokes");
+    else if (s == "growth") p.pattern = bark::StressPattern::Growth;
+    else v->fail("unknown stress pattern \"" + s + "\"; allowed: uniform, horizontal, vertical, mixed, image, strokes, growth");
   }
   if (auto v = o.get("iterations")) p.iterations = v->integer();
   if (auto v = o.get("cracks_per_iteration")) p.cracks_per_iteration = v->integer();

@@ -17,6 +17,7 @@
 #include "bark/stress/crack_insertion.h"
 #include "bark/stress/stress_cracker.h"
 #include "bark/stress/stress_mesh.h"
+#include "bark/stress/stress_patterns.h"
 
 using namespace phellem::bark;
 
@@ -188,6 +189,47 @@ TEST(StressCracker, NewFacesRespectTheKappaClamp) {
   ASSERT_GT(c.stats().splits, 0);
   for (FaceId f : c.mesh().mesh().faces())
     EXPECT_LE(Eigen::JacobiSVD<Eigen::Matrix3d>(c.mesh().face(f).beta).singularValues()[0], bound * (1 + 1e-9));
+}
+
+TEST(StressPatterns, GrowthPullsAroundATubeOfAnyOrientation) {
+  // A cylinder of radius 0.2 tilted 60° from +Y: outward growth stretches it around its girth
+  // only (normal curvature 1/r around, 0 along), so each face's stress is about s·g gᵀ with g
+  // the girth direction; the "horizontal" pattern, tied to +Y, is not.
+  TriMesh cyl = cylinder_mesh(0.2, 1.0, 48, 40, 0.0, 1);
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(kPi / 3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  for (auto& p : cyl.positions) p = tilt * p;
+  const Eigen::Vector3d axis = tilt * Eigen::Vector3d::UnitY();
+  auto girth_alignment = [&](StressPattern pattern) {
+    StressMesh m = StressMesh::from(cyl);
+    StressParams p;
+    p.pattern = pattern;
+    p.magnitude = 2.0;
+    p.random_rotation = 0;
+    initialize_stress(m, p);
+    double worst = 0, mean_tension = 0;
+    int faces = 0;
+    for (FaceId f : m.mesh().faces()) {
+      const FaceState& st = m.face(f);
+      if (std::abs(st.normal.dot(axis)) > 1e-6) continue;  // (none on this open tube)
+      const Eigen::Matrix3d w = st.frame * st.sigma * st.frame.transpose();
+      const Eigen::Vector3d girth = axis.cross(st.normal).normalized();
+      worst = std::max({worst, std::abs(axis.dot(w * axis)), std::abs(girth.dot(w * axis))});
+      mean_tension += girth.dot(w * girth);
+      ++faces;
+    }
+    return std::pair{worst, mean_tension / faces};
+  };
+  const auto [growth_off, growth_tension] = girth_alignment(StressPattern::Growth);
+  EXPECT_LT(growth_off, 0.05 * 2.0);  // nothing along the axis, no shear
+  EXPECT_NEAR(growth_tension, 2.0, 0.1);  // the median face carries the magnitude
+  const auto [horizontal_off, horizontal_tension] = girth_alignment(StressPattern::Horizontal);
+  EXPECT_GT(horizontal_off, 0.3 * 2.0) << "the horizontal pattern does not follow a tilted tube";
+  // A flat sheet does not stretch when it grows outward.
+  StressMesh sheet = StressMesh::from(jittered_sheet(8, 8, 1.0, 1.0, 0.2, 3));
+  StressParams p;
+  p.pattern = StressPattern::Growth;
+  initialize_stress(sheet, p);
+  for (FaceId f : sheet.mesh().faces()) EXPECT_LT(sheet.face(f).sigma.norm(), 1e-12);
 }
 
 TEST(StressMesh, RefusesMalformedMeshes) {

@@ -21,6 +21,7 @@ enum class StressPattern {
   Mixed,           // horizontal tension plus mix_ratio × vertical tension
   Image,           // a stress image over UV space (StressImage)
   Strokes,         // only the strokes (zero elsewhere)
+  Growth,          // outward growth: tension along each direction in proportion to the surface's curvature
 };
 
 // A stress image over the mesh's UV space: 1 channel scales the base pattern's magnitude;

@@ -1,5 +1,6 @@
 #include "bark/stress/stress_patterns.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
@@ -128,9 +129,32 @@ Eigen::Matrix2d face_curvature(const StressMesh& m, FaceId f) {
   return 0.5 * (k + k.transpose());
 }
 
+// Growth: a surface pushed outward by δ stretches each tangent direction by δ times its normal
+// curvature (an offset surface's strain is δ·II), so σ = s·II / κ̄, with κ̄ the median over the
+// faces of the largest principal curvature: a tube of any orientation is pulled around its
+// girth and cracks along its length, like a trunk under the "horizontal" pattern; a saddle is
+// compressed along its concave direction; a flat mesh gets no stress.
+namespace {
+std::vector<Eigen::Matrix2d> growth_stress(const StressMesh& m, double s) {
+  const SurfaceMesh& g = m.mesh();
+  std::vector<Eigen::Matrix2d> k;
+  std::vector<double> largest;
+  for (FaceId f : g.faces()) {
+    k.push_back(face_curvature(m, f));
+    largest.push_back(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(k.back(), Eigen::EigenvaluesOnly).eigenvalues()[1]);
+  }
+  if (largest.empty()) return k;
+  std::nth_element(largest.begin(), largest.begin() + std::ptrdiff_t(largest.size() / 2), largest.end());
+  const double median = largest[largest.size() / 2];
+  for (Eigen::Matrix2d& t : k) t = median > 0 ? Eigen::Matrix2d(s / median * t) : Eigen::Matrix2d::Zero();
+  return k;
+}
+}  // namespace
+
 void initialize_stress(StressMesh& m, const StressParams& p) {
   const SurfaceMesh& g = m.mesh();
   const double s = p.magnitude;
+  const std::vector<Eigen::Matrix2d> growth = p.pattern == StressPattern::Growth ? growth_stress(m, s) : std::vector<Eigen::Matrix2d>{};
   for (FaceId f : g.faces()) {
     FaceState& st = m.face(f);
     const auto [h, v] = horizontal_vertical(st.normal);
@@ -143,7 +167,8 @@ void initialize_stress(StressMesh& m, const StressParams& p) {
       case StressPattern::Horizontal: w = s * h * h.transpose(); break;
       case StressPattern::Vertical: w = s * v * v.transpose(); break;
       case StressPattern::Mixed: w = s * (h * h.transpose() + p.mix_ratio * v * v.transpose()); break;
-      case StressPattern::Strokes: break;
+      case StressPattern::Strokes:
+      case StressPattern::Growth: break;
     }
     if (!p.image.empty() && m.has_uvs()) {
       const Eigen::Vector2d uv = centroid_uv(m, f);
@@ -156,6 +181,7 @@ void initialize_stress(StressMesh& m, const StressParams& p) {
       }
     }
     m.set_world_stress(f, w);
+    if (p.pattern == StressPattern::Growth) st.sigma = growth[f.idx()];
     if (p.random_rotation > 0) {  // RR: rotate the tensor in its plane by up to ±RR·π/2
       StreamRng rng(p.seed ^ 0x52520000ULL, f.idx(), 0);
       const double a = p.random_rotation * 0.5 * kPi * rng.symmetric();
