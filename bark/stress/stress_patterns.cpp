@@ -130,10 +130,14 @@ Eigen::Matrix2d face_curvature(const StressMesh& m, FaceId f) {
 }
 
 // Growth: a surface pushed outward by δ stretches each tangent direction by δ times its normal
-// curvature (an offset surface's strain is δ·II), so σ = s·II / κ̄, with κ̄ the median over the
-// faces of the largest principal curvature: a tube of any orientation is pulled around its
-// girth and cracks along its length, like a trunk under the "horizontal" pattern; a saddle is
-// compressed along its concave direction; a flat mesh gets no stress.
+// curvature (an offset surface's strain is δ·II), so the tension follows II: a tube of any
+// orientation is pulled around its girth and cracks along its length, like a trunk under the
+// "horizontal" pattern; a saddle is compressed along its concave direction; a flat mesh gets
+// no stress. The magnitude is s·II / max(κ₁, κ̄), κ₁ the face's largest principal curvature
+// and κ̄ the median of κ₁ over the faces: s wherever the surface bends at least as much as
+// usual, so the thin branches of a tree are not cracked first (bark tears with the relative
+// growth of the girth, which the tree does not concentrate on its thinnest limbs), and
+// proportionally less on flatter parts.
 namespace {
 std::vector<Eigen::Matrix2d> growth_stress(const StressMesh& m, double s) {
   const SurfaceMesh& g = m.mesh();
@@ -144,9 +148,13 @@ std::vector<Eigen::Matrix2d> growth_stress(const StressMesh& m, double s) {
     largest.push_back(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(k.back(), Eigen::EigenvaluesOnly).eigenvalues()[1]);
   }
   if (largest.empty()) return k;
-  std::nth_element(largest.begin(), largest.begin() + std::ptrdiff_t(largest.size() / 2), largest.end());
-  const double median = largest[largest.size() / 2];
-  for (Eigen::Matrix2d& t : k) t = median > 0 ? Eigen::Matrix2d(s / median * t) : Eigen::Matrix2d::Zero();
+  std::vector<double> sorted = largest;
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  for (size_t f = 0; f < k.size(); ++f) {
+    const double scale = std::max(largest[f], median);
+    k[f] = scale > 0 ? Eigen::Matrix2d(s / scale * k[f]) : Eigen::Matrix2d::Zero();
+  }
   return k;
 }
 }  // namespace
