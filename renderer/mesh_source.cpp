@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "bark/geometry/procedural_meshes.h"
+#include "bark/geometry/tube_junctions.h"
 #include "renderer/displacement.h"
 #include "renderer/errors.h"
 #include "renderer/mesh_io.h"
@@ -54,15 +56,23 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
       throw UserError(o.where.file, o.where.path + "/bark/preprocess/edge_length",
                       "an edge length of " + std::to_string(d.target) + " m would dice the tree into about " + std::to_string(estimate) +
                           " triangles; at most 20000000 are allowed");
+    // Each part diced on its own, then joined at the branchings into one surface, so cracks
+    // can run from the trunk into a branch.
+    std::vector<bark::TriMesh> tubes;
+    std::vector<int> parent;
     for (const TreePart& part : parts) {
       const MeshData m = dice(part.surface, d);
-      const uint32_t base = uint32_t(t.positions.size());
-      for (const Vec3f& p : m.positions) t.positions.push_back(p.cast<double>());
+      bark::TriMesh& tube = tubes.emplace_back();
+      for (const Vec3f& p : m.positions) tube.positions.push_back(p.cast<double>());
       for (size_t k = 0; k < m.positions.size(); ++k)
-        t.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
-      for (size_t k = 0; k + 2 < m.indices.size(); k += 3) t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
+        tube.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
+      for (size_t k = 0; k + 2 < m.indices.size(); k += 3) tube.triangles.push_back({m.indices[k], m.indices[k + 1], m.indices[k + 2]});
+      parent.push_back(part.parent);
     }
-    return t;  // trees carry no transform
+    bark::JoinedTubes joined = bark::join_tubes(tubes, parent);
+    for (const std::string& why : joined.not_joined)
+      std::fprintf(stderr, "phellem: warning: %s: %s: %s; cracks stop at that junction\n", o.where.file.c_str(), o.where.path.c_str(), why.c_str());
+    return std::move(joined.mesh);  // trees carry no transform
   }
   if (o.procedural) {
     t = procedural_trimesh(*o.procedural);

@@ -1,0 +1,113 @@
+// Joining a tree's tubes at their branchings (bark/geometry/tube_junctions): one manifold
+// surface, nothing left inside either tube, UVs from the part each face lies on.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "bark/geometry/procedural_meshes.h"
+#include "bark/geometry/tube_junctions.h"
+#include "bark/stress/stress_mesh.h"
+
+namespace phellem::bark {
+namespace {
+
+constexpr double kPi = 3.141592653589793;
+
+// A trunk of radius 0.2 along +Y (y in [0, 1]) and a branch of radius 0.08 along +X from the
+// trunk's axis at y = 0.5 (x in [start, start + 0.6]).
+struct TJunction {
+  std::vector<TriMesh> parts;
+  std::vector<int> parent{-1, 0};
+};
+
+TJunction t_junction(double start) {
+  TJunction t;
+  t.parts.push_back(cylinder_mesh(0.2, 1.0, 64, 40, 0.0, 1));
+  TriMesh branch = cylinder_mesh(0.08, 0.6, 32, 30, 0.0, 1);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(-kPi / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();  // +Y -> +X
+  for (auto& p : branch.positions) p = r * p + Eigen::Vector3d(start, 0.5, 0);
+  t.parts.push_back(branch);
+  return t;
+}
+
+int border_loops(const StressMesh& m) {
+  const SurfaceMesh& g = m.mesh();
+  std::vector<char> seen(g.number_of_halfedges(), 0);
+  int loops = 0;
+  for (auto h : g.halfedges()) {
+    if (!g.is_border(h) || seen[h.idx()]) continue;
+    ++loops;
+    for (auto k : CGAL::halfedges_around_face(h, g)) seen[k.idx()] = 1;
+  }
+  return loops;
+}
+
+int face_components(const StressMesh& m) {
+  const SurfaceMesh& g = m.mesh();
+  std::vector<int> seen(g.number_of_faces(), 0);
+  int components = 0;
+  for (FaceId start : g.faces()) {
+    if (seen[start.idx()]) continue;
+    ++components;
+    std::vector<FaceId> stack{start};
+    seen[start.idx()] = 1;
+    while (!stack.empty()) {
+      const FaceId f = stack.back();
+      stack.pop_back();
+      for (auto h : CGAL::halfedges_around_face(g.halfedge(f), g)) {
+        const FaceId n = g.face(g.opposite(h));
+        if (n != SurfaceMesh::null_face() && !seen[n.idx()]) {
+          seen[n.idx()] = 1;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  return components;
+}
+
+TEST(TubeJunctions, BranchIsStitchedIntoItsParentWithNothingInside) {
+  const TJunction t = t_junction(0.0);
+  const JoinedTubes j = join_tubes(t.parts, t.parent);
+  EXPECT_TRUE(j.not_joined.empty()) << j.not_joined.front();
+  const StressMesh m = StressMesh::from(j.mesh);  // throws on a non-manifold edge
+  EXPECT_TRUE(m.mesh().is_valid(false));
+  // Open ends: the trunk's two and the branch's tip; the junction is closed, and trunk and
+  // branch are one connected surface (a crack can run across).
+  EXPECT_EQ(border_loops(m), 3);
+  EXPECT_EQ(face_components(m), 1);
+  ASSERT_EQ(j.mesh.uvs.size(), j.mesh.positions.size());
+  int on_branch = 0;
+  for (size_t f = 0; f < j.mesh.triangles.size(); ++f) {
+    const auto& tri = j.mesh.triangles[f];
+    const Eigen::Vector3d c = (j.mesh.positions[tri[0]] + j.mesh.positions[tri[1]] + j.mesh.positions[tri[2]]) / 3;
+    const double from_trunk_axis = std::hypot(c.x(), c.z()), from_branch_axis = std::hypot(c.y() - 0.5, c.z());
+    // Nothing of the branch inside the trunk, nothing of the trunk inside the branch (faces are
+    // flat, so their centres lie up to a sagitta inside the round surface they belong to).
+    EXPECT_FALSE(from_trunk_axis < 0.19 && from_branch_axis < 0.075) << "face " << f << " at " << c.transpose();
+    if (from_branch_axis > 0.07 && c.x() > 0.3) {
+      // A branch face: its corners carry the branch's (u, v) = (θ / 2π, distance along / 0.6).
+      ++on_branch;
+      for (uint32_t k : tri) EXPECT_NEAR(j.mesh.uvs[k].y(), j.mesh.positions[k].x() / 0.6, 1e-6);
+    } else if (from_trunk_axis > 0.19 && std::abs(c.y() - 0.5) > 0.15) {
+      for (uint32_t k : tri) EXPECT_NEAR(j.mesh.uvs[k].y(), j.mesh.positions[k].y(), 1e-6);  // the trunk's v = y / 1
+    }
+  }
+  EXPECT_GT(on_branch, 500);
+}
+
+TEST(TubeJunctions, ABranchThatMissesItsParentIsKeptApartAndNamed) {
+  const TJunction t = t_junction(0.3);  // starts outside the trunk
+  const JoinedTubes j = join_tubes(t.parts, t.parent);
+  ASSERT_EQ(j.not_joined.size(), 1u);
+  EXPECT_NE(j.not_joined[0].find("branch 1"), std::string::npos);
+  EXPECT_NE(j.not_joined[0].find("closed curve"), std::string::npos) << j.not_joined[0];
+  size_t faces = 0;
+  for (const TriMesh& p : t.parts) faces += p.triangles.size();
+  EXPECT_EQ(j.mesh.triangles.size(), faces);  // both tubes whole
+  EXPECT_EQ(face_components(StressMesh::from(j.mesh)), 2);
+}
+
+}  // namespace
+}  // namespace phellem::bark
