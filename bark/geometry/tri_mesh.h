@@ -18,4 +18,8 @@ struct TriMesh {
   double area() const;
 };
 
+// Barycentric coordinates of q's projection onto the plane of triangle (a, b, c), extrapolated
+// outside it; (1, 0, 0) for a degenerate triangle.
+Eigen::Vector3d barycentric(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
 }  // namespace phellem::bark

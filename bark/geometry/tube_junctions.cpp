@@ -158,16 +158,6 @@ std::string join_branch(SurfaceMesh& surface, SurfaceMesh branch) {
   return {};
 }
 
-// Barycentric coordinates of q in the plane of (a, b, c), extrapolated outside it.
-Eigen::Vector3d barycentric(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d v0 = b - a, v1 = c - a, v2 = q - a;
-  const double d00 = v0.dot(v0), d01 = v0.dot(v1), d11 = v1.dot(v1), d20 = v2.dot(v0), d21 = v2.dot(v1);
-  const double den = d00 * d11 - d01 * d01;
-  if (!(std::abs(den) > 0)) return {1, 0, 0};
-  const double v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
-  return {1 - v - w, v, w};
-}
-
 Eigen::Vector3d to_eigen(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
 }  // namespace
