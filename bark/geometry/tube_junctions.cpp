@@ -99,16 +99,20 @@ bool remove_slivers(SurfaceMesh& m) {
 // piece bounded by the curve), and stitches the rest together into `surface`. Returns an empty
 // string, or why the branch was kept apart (then `surface` gets it unchanged).
 std::string join_branch(SurfaceMesh& surface, SurfaceMesh branch) {
+  // Whatever goes wrong, the surface is restored and gets the branch as it came.
+  const SurfaceMesh surface_before = surface, branch_before = branch;
+  auto apart = [&](std::string why) {
+    surface = surface_before;
+    surface.join(branch_before);
+    return why;
+  };
   auto on_curve_s = surface.add_property_map<SurfaceMesh::Edge_index, bool>("e:junction", false).first;
   auto on_curve_b = branch.add_property_map<SurfaceMesh::Edge_index, bool>("e:junction", false).first;
-  const SurfaceMesh untouched = branch;
   try {
     PMP::corefine(surface, branch, CGAL::parameters::edge_is_constrained_map(on_curve_s).throw_on_self_intersection(true),
                   CGAL::parameters::edge_is_constrained_map(on_curve_b));
   } catch (const std::exception& e) {
-    surface.remove_property_map(on_curve_s);
-    surface.join(untouched);
-    return std::string("CGAL could not intersect it with its parent (") + e.what() + ")";
+    return apart(std::string("CGAL could not intersect it with its parent (") + e.what() + ")");
   }
   auto comp_s = surface.add_property_map<FaceId, std::size_t>("f:junction_component").first;
   auto comp_b = branch.add_property_map<FaceId, std::size_t>("f:junction_component").first;
@@ -128,12 +132,7 @@ std::string join_branch(SurfaceMesh& surface, SurfaceMesh branch) {
       ++on_curve;
       if (hole == ns || area_s[c] < area_s[hole]) hole = c;
     }
-  if (nb < 2 || on_curve < 2) {
-    surface.remove_property_map(comp_s);
-    surface.remove_property_map(on_curve_s);
-    surface.join(untouched);
-    return "it does not pass through its parent's surface along a closed curve";
-  }
+  if (nb < 2 || on_curve < 2) return apart("it does not pass through its parent's surface along a closed curve");
   std::size_t keep = 0;
   for (std::size_t c = 1; c < nb; ++c)
     if (area_b[c] > area_b[keep]) keep = c;
@@ -149,10 +148,7 @@ std::string join_branch(SurfaceMesh& surface, SurfaceMesh branch) {
   SurfaceMesh joined = surface;
   joined.join(branch);
   PMP::stitch_borders(joined);
-  if (!remove_slivers(joined)) {
-    surface.join(untouched);
-    return "its junction left triangles of zero area that could not be removed";
-  }
+  if (!remove_slivers(joined)) return apart("its junction left triangles of zero area that could not be removed");
   joined.collect_garbage();
   surface = std::move(joined);
   return {};
