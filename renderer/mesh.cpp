@@ -2,7 +2,6 @@
 
 #include <array>
 #include <bit>
-#include <numeric>
 #include <unordered_map>
 
 namespace phellem {
@@ -17,34 +16,38 @@ struct FloatTripleHash {
 };
 }  // namespace
 
-void compute_vertex_normals(MeshData& m, bool weld_by_position) {
-  // Each vertex accumulates into its representative: itself, or the first vertex at its position.
-  std::vector<uint32_t> rep(m.positions.size());
-  std::iota(rep.begin(), rep.end(), 0u);
+std::vector<Vec3f> vertex_normals(const std::vector<Vec3f>& positions, const std::vector<uint32_t>& indices, bool weld_by_position) {
+  // With welding, each vertex accumulates into the first vertex at its position.
+  std::vector<uint32_t> rep;
   if (weld_by_position) {
+    rep.resize(positions.size());
     std::unordered_map<std::array<float, 3>, uint32_t, FloatTripleHash> first;
-    first.reserve(m.positions.size());
-    for (uint32_t i = 0; i < m.positions.size(); ++i) {
-      const Vec3f& p = m.positions[i];
+    first.reserve(positions.size());
+    for (uint32_t i = 0; i < positions.size(); ++i) {
+      const Vec3f& p = positions[i];
       rep[i] = first.try_emplace({p.x(), p.y(), p.z()}, i).first->second;
     }
   }
-  std::vector<Vec3f> n(m.positions.size(), Vec3f::Zero());
-  for (size_t f = 0; f + 2 < m.indices.size(); f += 3) {
-    const uint32_t a = m.indices[f], b = m.indices[f + 1], c = m.indices[f + 2];
-    const Vec3f fn = (m.positions[b] - m.positions[a]).cross(m.positions[c] - m.positions[a]);
-    n[rep[a]] += fn;
-    n[rep[b]] += fn;
-    n[rep[c]] += fn;
+  auto at = [&](uint32_t i) { return rep.empty() ? i : rep[i]; };
+  std::vector<Vec3f> n(positions.size(), Vec3f::Zero());
+  for (size_t f = 0; f + 2 < indices.size(); f += 3) {
+    const uint32_t a = indices[f], b = indices[f + 1], c = indices[f + 2];
+    const Vec3f fn = (positions[b] - positions[a]).cross(positions[c] - positions[a]);
+    n[at(a)] += fn;
+    n[at(b)] += fn;
+    n[at(c)] += fn;
   }
-  for (size_t i = 0; i < n.size(); ++i) {
-    if (rep[i] != i) continue;
+  for (uint32_t i = 0; i < n.size(); ++i) {
+    if (at(i) != i) continue;
     const float l = n[i].norm();
     n[i] = l > 0 ? Vec3f(n[i] / l) : Vec3f(0, 1, 0);
   }
-  for (size_t i = 0; i < n.size(); ++i) n[i] = n[rep[i]];
-  m.normals = std::move(n);
+  if (!rep.empty())
+    for (size_t i = 0; i < n.size(); ++i) n[i] = n[rep[i]];
+  return n;
 }
+
+void compute_vertex_normals(MeshData& m, bool weld_by_position) { m.normals = vertex_normals(m.positions, m.indices, weld_by_position); }
 
 void compute_tangents(MeshData& m) {
   if (m.uvs.size() != m.positions.size()) return;

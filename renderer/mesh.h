@@ -29,6 +29,8 @@ struct MeshData {
 // `weld_by_position`, vertices at the same position (split at a UV seam) share one normal
 // from all their faces: the surface is smooth across the seam.
 void compute_vertex_normals(MeshData& mesh, bool weld_by_position = false);
+// The same normals for positions and indices held apart.
+std::vector<Vec3f> vertex_normals(const std::vector<Vec3f>& positions, const std::vector<uint32_t>& indices, bool weld_by_position = false);
 // Per-vertex tangents from UVs (for normal maps); no-op without UVs.
 void compute_tangents(MeshData& mesh);
 

@@ -311,26 +311,23 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
   m.positions.resize(verts.size());
   if (!base.uvs.empty()) m.uvs.resize(verts.size());
   if (keep_params) m.params.resize(verts.size());
-  MeshData flat;  // the same grid undisplaced, for the normals below
-  flat.positions.resize(verts.size());
-  std::vector<Vec3f> smooth(verts.size());
+  std::vector<Vec3f> flat(verts.size()), smooth(verts.size());  // the grid undisplaced, for the normals below
   tbb::parallel_for(size_t(0), verts.size(), [&](size_t k) {
     const Origin& o = verts[k];
     m.positions[k] = displaced(base, disp, o.a, o.b, o.c, o.bary, keep_params ? &m.params[k] : nullptr);
-    flat.positions[k] = o.bary[0] * base.positions[o.a] + o.bary[1] * base.positions[o.b] + o.bary[2] * base.positions[o.c];
+    flat[k] = o.bary[0] * base.positions[o.a] + o.bary[1] * base.positions[o.b] + o.bary[2] * base.positions[o.c];
     smooth[k] = (o.bary[0] * base.normals[o.a] + o.bary[1] * base.normals[o.b] + o.bary[2] * base.normals[o.c]).normalized();
     if (!base.uvs.empty()) m.uvs[k] = o.bary[0] * base.uvs[o.a] + o.bary[1] * base.uvs[o.b] + o.bary[2] * base.uvs[o.c];
   });
   m.indices = std::move(indices);
-  flat.indices = m.indices;
   // Shading normals: the displaced grid's normal, carried from the flat base triangle onto the
   // base's smooth (interpolated) normal, N = normalize(N_displaced − N_flat + n_smooth). Where
   // nothing is displaced this is exactly the interpolated base normal, as on undiced triangles:
   // a coarse mesh shades smoothly, not as the facets its diced patches would otherwise show.
   compute_vertex_normals(m);
-  compute_vertex_normals(flat);
+  const std::vector<Vec3f> flat_normals = vertex_normals(flat, m.indices);
   for (size_t k = 0; k < verts.size(); ++k) {
-    const Vec3f n = m.normals[k] - flat.normals[k] + smooth[k];
+    const Vec3f n = m.normals[k] - flat_normals[k] + smooth[k];
     m.normals[k] = n.squaredNorm() > 1e-12f ? Vec3f(n.normalized()) : smooth[k];
   }
   compute_tangents(m);
