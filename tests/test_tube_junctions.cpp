@@ -1,5 +1,5 @@
-// Joining a tree's tubes at their branchings (bark/geometry/tube_junctions): one manifold
-// surface, nothing left inside either tube, UVs from the part each face lies on.
+// Joining a tree's tubes at their branchings (bark/geometry/tube_junctions): one closed
+// manifold surface, nothing left inside either tube, UVs from the part each face lies on.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -73,9 +73,10 @@ TEST(TubeJunctions, BranchIsStitchedIntoItsParentWithNothingInside) {
   EXPECT_TRUE(j.not_joined.empty()) << j.not_joined.front();
   const StressMesh m = StressMesh::from(j.mesh);  // throws on a non-manifold edge
   EXPECT_TRUE(m.mesh().is_valid(false));
-  // Open ends: the trunk's two and the branch's tip; the junction is closed, and trunk and
-  // branch are one connected surface (a crack can run across).
-  EXPECT_EQ(border_loops(m), 3);
+  // The junction is stitched and the three open ends (the trunk's two, the branch's tip) are
+  // capped: a closed surface, trunk and branch one connected piece (a crack can run across).
+  EXPECT_EQ(j.caps, 3);
+  EXPECT_EQ(border_loops(m), 0);
   EXPECT_EQ(face_components(m), 1);
   ASSERT_EQ(j.mesh.uvs.size(), j.mesh.positions.size());
   int on_branch = 0;
@@ -105,8 +106,11 @@ TEST(TubeJunctions, ABranchThatMissesItsParentIsKeptApartAndNamed) {
   EXPECT_NE(j.not_joined[0].find("closed curve"), std::string::npos) << j.not_joined[0];
   size_t faces = 0;
   for (const TriMesh& p : t.parts) faces += p.triangles.size();
-  EXPECT_EQ(j.mesh.triangles.size(), faces);  // both tubes whole
-  EXPECT_EQ(face_components(StressMesh::from(j.mesh)), 2);
+  EXPECT_GT(j.mesh.triangles.size(), faces);  // both tubes whole, and their four ends capped
+  EXPECT_EQ(j.caps, 4);
+  const StressMesh m = StressMesh::from(j.mesh);
+  EXPECT_EQ(face_components(m), 2);
+  EXPECT_EQ(border_loops(m), 0);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -170,6 +171,22 @@ JoinedTubes join_tubes(const std::vector<TriMesh>& parts, const std::vector<int>
       continue;
     }
     if (const std::string why = join_branch(surface, std::move(branch)); !why.empty()) out.not_joined.push_back("branch " + std::to_string(k) + ": " + why);
+  }
+  // The open ends (the trunk's base and top, each limb's tip) are closed with flat caps
+  // refined to the density around them, like sawn ends: a closed surface has no hollow ends to
+  // show, and the crack depth's ray cast always finds the far side.
+  std::vector<SurfaceMesh::Halfedge_index> borders;
+  std::vector<char> seen(surface.number_of_halfedges(), 0);
+  for (auto h : surface.halfedges()) {
+    if (!surface.is_border(h) || seen[h.idx()]) continue;
+    for (auto k : CGAL::halfedges_around_face(h, surface)) seen[k.idx()] = 1;
+    borders.push_back(h);
+  }
+  for (auto h : borders) {
+    std::vector<FaceId> added;
+    std::vector<VertexId> inside;
+    PMP::triangulate_and_refine_hole(surface, h, std::back_inserter(added), std::back_inserter(inside));
+    out.caps += added.empty() ? 0 : 1;
   }
   // Texture coordinates: each face belongs to the part whose surface it lies on, and each corner
   // reads that part's UVs through the part's triangle under the face's centre.

@@ -15,12 +15,14 @@ struct JoinedTubes {
   // Branches that could not be joined (no closed intersection with their parent, or CGAL
   // refused the meshes), with the reason; those are kept as separate tubes.
   std::vector<std::string> not_joined;
+  int caps = 0;  // open ends closed
 };
 
 // `parts[0]` is the trunk; part k > 0 leaves `parts[parent[k]]` (parent[k] < k) with its base
 // inside it. Each branch is cut along its intersection with the surface built so far (CGAL
 // corefinement); the branch's piece inside and the surface's piece inside the branch are
-// dropped, and the two are stitched along the intersection curve. Each output corner takes
+// dropped, and the two are stitched along the intersection curve; the open ends are closed
+// with flat caps refined to the density around them. Each output corner takes
 // its UV from the part its face lies on, through that part's triangle under the face's centre
 // (extrapolated), so UV seams stay seams and the junction curve becomes one.
 JoinedTubes join_tubes(const std::vector<TriMesh>& parts, const std::vector<int>& parent);
