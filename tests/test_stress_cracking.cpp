@@ -199,10 +199,11 @@ TEST(StressPatterns, GrowthPullsAroundATubeOfAnyOrientation) {
   const Eigen::Matrix3d tilt = Eigen::AngleAxisd(kPi / 3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   for (auto& p : cyl.positions) p = tilt * p;
   const Eigen::Vector3d axis = tilt * Eigen::Vector3d::UnitY();
-  auto girth_alignment = [&](StressPattern pattern) {
+  auto girth_alignment = [&](StressPattern pattern, const StressImage* image = nullptr) {
     StressMesh m = StressMesh::from(cyl);
     StressParams p;
     p.pattern = pattern;
+    if (image) p.image = *image;
     p.magnitude = 2.0;
     p.random_rotation = 0;
     initialize_stress(m, p);
@@ -222,6 +223,12 @@ TEST(StressPatterns, GrowthPullsAroundATubeOfAnyOrientation) {
   const auto [growth_off, growth_tension] = girth_alignment(StressPattern::Growth);
   EXPECT_LT(growth_off, 0.05 * 2.0);  // nothing along the axis, no shear
   EXPECT_NEAR(growth_tension, 2.0, 0.1);  // the median face carries the magnitude
+  // A one-channel stress image scales it like any pattern.
+  StressImage half;
+  half.width = half.height = half.channels = 1;
+  half.values = {0.5f};
+  const auto [scaled_off, scaled_tension] = girth_alignment(StressPattern::Growth, &half);
+  EXPECT_NEAR(scaled_tension, 1.0, 0.05);
   const auto [horizontal_off, horizontal_tension] = girth_alignment(StressPattern::Horizontal);
   EXPECT_GT(horizontal_off, 0.3 * 2.0) << "the horizontal pattern does not follow a tilted tube";
   // A flat sheet does not stretch when it grows outward.

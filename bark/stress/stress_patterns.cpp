@@ -175,8 +175,8 @@ void initialize_stress(StressMesh& m, const StressParams& p) {
       case StressPattern::Horizontal: w = s * h * h.transpose(); break;
       case StressPattern::Vertical: w = s * v * v.transpose(); break;
       case StressPattern::Mixed: w = s * (h * h.transpose() + p.mix_ratio * v * v.transpose()); break;
-      case StressPattern::Strokes:
-      case StressPattern::Growth: break;
+      case StressPattern::Growth: w = st.frame * growth[f.idx()] * st.frame.transpose(); break;
+      case StressPattern::Strokes: break;
     }
     if (!p.image.empty() && m.has_uvs()) {
       const Eigen::Vector2d uv = centroid_uv(m, f);
@@ -189,7 +189,6 @@ void initialize_stress(StressMesh& m, const StressParams& p) {
       }
     }
     m.set_world_stress(f, w);
-    if (p.pattern == StressPattern::Growth) st.sigma = growth[f.idx()];
     if (p.random_rotation > 0) {  // RR: rotate the tensor in its plane by up to ±RR·π/2
       StreamRng rng(p.seed ^ 0x52520000ULL, f.idx(), 0);
       const double a = p.random_rotation * 0.5 * kPi * rng.symmetric();
