@@ -14,7 +14,8 @@ constexpr float kNoiseFrequency = 60.0f;
 
 CrackProfile::CrackProfile(const bark::CrackedMesh& c, const CrackLook& look, uint32_t seed) : look_(look), seed_(seed) {
   auto half_width = [&](uint32_t v) {
-    return std::clamp(look.min_width + look.width_per_edge * c.crack_width[v], look.min_width, look.max_width);
+    const float gap = v < c.displacement.size() ? look.gap * c.displacement[v].norm() : 0.0f;  // sec. 3.1.6
+    return std::clamp(look.min_width + look.width_per_edge * c.crack_width[v] + gap, look.min_width, look.max_width);
   };
   for (const auto& e : c.crack_edges)
     seg_.push_back({c.mesh.positions[e[0]].cast<float>(), c.mesh.positions[e[1]].cast<float>(), half_width(e[0]), half_width(e[1])});

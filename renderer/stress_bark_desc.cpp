@@ -136,6 +136,7 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
       l.darkening = w->non_negative();
       if (l.darkening > 1) w->fail("darkening must lie in [0, 1]");
     }
+    if (auto w = m.get("gap")) l.gap = w->non_negative();
     m.finish();
   }
   if (auto e = bark::validate(p)) o.fail(o.has(e->key) ? e->key : "", e->key + ": " + e->message);

@@ -21,6 +21,9 @@ struct CrackLook {
   float max_depth = 0.012f;        // depth cap (m)
   float noise = 0.3f;              // relative modulation of width and depth
   float darkening = 0.7f;          // albedo × (1 − darkening × normalized depth)
+  // The visible gap (sec. 3.1.6, Figure 19): the half-width also grows by gap × the crack
+  // vertex's summed virtual displacement from the relaxation (still capped at max_width).
+  float gap = 0.0f;
 };
 
 // Preprocessing (sec. 3.1.4: remove regularity and slivers before cracking).

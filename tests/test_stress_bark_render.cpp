@@ -114,3 +114,28 @@ TEST(CrackProfile, NeverDeeperThanAFractionOfTheLocalThickness) {
   EXPECT_EQ(thick.at(Vec3f(0.02f, 0, 0), up).depth, 0.0f);
   EXPECT_NEAR(thick.at(Vec3f(0.003f, 0, 0), up).depth, 0.005f, 1e-5f);
 }
+
+TEST(CrackProfile, GapWidensByTheVirtualDisplacement) {
+  // Sec. 3.1.6: the crack opens by the summed relaxation movement of its vertices. A crack of
+  // Algorithm 1 width 1 (half-width 1 mm + 0.5 mm) whose ends moved 10 mm: with gap 0.2 the
+  // half-width is 3.5 mm, so a point 2.5 mm off the crack is carved (depth × (1 − 2.5/3.5)).
+  bark::CrackedMesh c;
+  c.mesh.positions = {{-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0}, {-0.05, 0.05, 0}, {0.0, -0.05, 0}, {0.0, 0.05, 0}};
+  c.mesh.triangles = {{0, 4, 5}, {0, 5, 3}, {4, 1, 2}, {4, 2, 5}};
+  c.crack_edges = {{4, 5}};
+  c.crack_width = {0, 0, 0, 0, 1, 1};
+  c.component = {-1, -1, -1, -1, 0, 0};
+  c.displacement.assign(6, Eigen::Vector3f::Zero());
+  c.displacement[4] = c.displacement[5] = Eigen::Vector3f(0.006f, 0.008f, 0);  // 10 mm
+  CrackLook look;
+  look.min_width = 0.001f;
+  look.width_per_edge = 0.0005f;
+  look.max_width = 0.02f;
+  look.depth_per_width = 1.0f;
+  look.max_depth = 0.05f;
+  look.noise = 0;
+  const Vec3f off(0.0025f, 0, 0), up(0, 0, 1);
+  EXPECT_EQ(CrackProfile(c, look, 1).at(off, up).depth, 0.0f);  // no gap: 1.5 mm wide, 2.5 mm away
+  look.gap = 0.2f;
+  EXPECT_NEAR(CrackProfile(c, look, 1).at(off, up).depth, 0.0035f * (1 - 2.5f / 3.5f), 1e-5f);
+}
