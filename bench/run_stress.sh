@@ -7,10 +7,7 @@
 # Medians of REPEAT runs (default 3).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-REPEAT=${REPEAT:-3}
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+source bench/common.sh
 run() {  # scene -> "simulate_median preprocess_median triangles_in triangles_out cracks"
   local sim=() pre=()
   for r in $(seq "$REPEAT"); do

@@ -7,17 +7,14 @@
 # (default 1280x960) and 1 spp. The cracked mesh is simulated once per run of the scene.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-REPEAT=${REPEAT:-3}
+source bench/common.sh
 RES=${RES:-1280x960}
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
 python3 - "$out/uniform.json" <<'PY'
 import json, sys
 s = json.load(open("scenes/stress_pine.json"))
 s["render"].setdefault("tessellation", {})["crack_aware"] = False
 json.dump(s, open(sys.argv[1], "w"))
 PY
-median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 measure() {  # scene -> "tessellate_s bvh_s diced_triangles diced_mb embree_mb"
   local tess=() bvh=() last
   for r in $(seq "$REPEAT"); do

@@ -6,17 +6,14 @@
 # scene's 960x640) and 1 spp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-REPEAT=${REPEAT:-3}
+source bench/common.sh
 RES=${RES:-960x640}
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
 python3 - "$out/plain.json" <<'PY'
 import json, sys
 s = json.load(open("scenes/strips_furrowed.json"))
 del s["objects"][0]["bark"]
 json.dump(s, open(sys.argv[1], "w"))
 PY
-median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 measure() {  # scene -> "first_pixel_s bark_s tessellate_s bvh_s diced_triangles diced_mb embree_mb rss_mb"
   local fp=() last
   for r in $(seq "$REPEAT"); do

@@ -5,10 +5,7 @@
 # Medians of REPEAT runs (default 3).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-REPEAT=${REPEAT:-3}
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
-median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+source bench/common.sh
 run() {  # scene, field resolution -> "simulate dress strips fractures" medians
   local sim=() dress=() s f
   for r in $(seq "$REPEAT"); do

@@ -20,8 +20,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<StressKernel, Primitive>>;
 
-Eigen::Vector3d to_eigen(const StressKernel::Point_3& p) { return {p.x(), p.y(), p.z()}; }
-
 // The remesher and the jitter leave vertices on the input's flat triangles, up to a sagitta
 // inside the curved surface they sample (0.25 mm on a 7852-triangle trunk of radius 0.16 m,
 // seen as mottled shading under a low sun). Each vertex moves onto the Phong surface
@@ -31,6 +29,8 @@ Eigen::Vector3d to_eigen(const StressKernel::Point_3& p) { return {p.x(), p.y(),
 void onto_phong_surface(const StressMesh& source, const Tree& all, SurfaceMesh& sm, double sharp_angle_deg) {
   const SurfaceMesh& src = source.mesh();
   const double cos_half = std::cos(0.5 * sharp_angle_deg * 3.141592653589793 / 180.0);
+  std::vector<Eigen::Vector3d> normal(src.number_of_vertices());
+  for (VertexId w : src.vertices()) normal[w.idx()] = source.vertex_normal(w);
   for (VertexId v : sm.vertices()) {
     const auto [point, face] = all.closest_point_and_primitive(sm.point(v));
     const Eigen::Vector3d q = to_eigen(point);
@@ -38,7 +38,7 @@ void onto_phong_surface(const StressMesh& source, const Tree& all, SurfaceMesh& 
     int k = 0;
     for (VertexId w : CGAL::vertices_around_face(src.halfedge(face), src)) {
       p[size_t(k)] = source.point(w);
-      n[size_t(k++)] = source.vertex_normal(w);
+      n[size_t(k++)] = normal[w.idx()];
     }
     const Eigen::Vector3d& fn = source.face(face).normal;
     if (!(n[0].dot(fn) > cos_half && n[1].dot(fn) > cos_half && n[2].dot(fn) > cos_half)) continue;

@@ -1,6 +1,7 @@
 #include "bark/geometry/tri_mesh.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 namespace phellem::bark {
@@ -19,6 +20,12 @@ Eigen::Vector3d barycentric(const Eigen::Vector3d& q, const Eigen::Vector3d& a, 
   if (!(std::abs(den) > 0)) return {1, 0, 0};
   const double v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
   return {1 - v - w, v, w};
+}
+
+double triangle_shape(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const double area = 0.5 * (b - a).cross(c - a).norm();
+  const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+  return longest > 0 ? area / longest : 0.0;
 }
 
 }  // namespace phellem::bark

@@ -51,15 +51,13 @@ void remove_components(SurfaceMesh& m, const SurfaceMesh::Property_map<FaceId, s
   m.collect_garbage();
 }
 
-// Whether a face is a sliver by StressMesh::from's measure (area below 1e-9 × its longest
-// edge squared; StressMesh refuses 1e-12).
+// Whether a face is a sliver by StressMesh::from's measure, with margin (StressMesh refuses
+// a triangle_shape of 1e-12).
 bool sliver(const SurfaceMesh& m, FaceId f) {
   std::array<Eigen::Vector3d, 3> p;
   int k = 0;
-  for (VertexId v : CGAL::vertices_around_face(m.halfedge(f), m)) p[size_t(k++)] = {m.point(v).x(), m.point(v).y(), m.point(v).z()};
-  const double area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
-  const double scale = std::max({(p[1] - p[0]).squaredNorm(), (p[2] - p[1]).squaredNorm(), (p[0] - p[2]).squaredNorm()});
-  return !(area > 1e-9 * scale);
+  for (VertexId v : CGAL::vertices_around_face(m.halfedge(f), m)) p[size_t(k++)] = to_eigen(m.point(v));
+  return !(triangle_shape(p[0], p[1], p[2]) > 1e-9);
 }
 
 // Where the curve runs through vertices or along edges of either mesh (a seam, a ring),
@@ -154,8 +152,6 @@ std::string join_branch(SurfaceMesh& surface, SurfaceMesh branch) {
   surface = std::move(joined);
   return {};
 }
-
-Eigen::Vector3d to_eigen(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
 }  // namespace
 

@@ -2,21 +2,16 @@
 
 namespace phellem::bark {
 
-Eigen::Matrix3d outer_m(const Eigen::Vector3d& a) {
-  const double len = a.norm();
-  return len > 0 ? Eigen::Matrix3d(a * a.transpose() / len) : Eigen::Matrix3d::Zero();
-}
-
 namespace {
 
 // The six distinct entries of a symmetric 3×3 tensor, accumulated in scalars: as Eigen
 // matrices returned by value, the sum stored and reloaded its halves (a store-forwarding
-// stall per term). Each entry is computed exactly as outer_m(p) - outer_m(q) computes it.
+// stall per term). Each entry is m(p) − m(q), m(a) = a aᵀ / |a| (0 for a = 0).
 struct Symmetric3 {
   double e[6] = {0, 0, 0, 0, 0, 0};  // xx, xy, xz, yy, yz, zz
   static constexpr int row[6] = {0, 0, 0, 1, 1, 2}, col[6] = {0, 1, 2, 1, 2, 2};
 
-  void add_difference(const Eigen::Vector3d& p, const Eigen::Vector3d& q) {  // += m(p) - m(q)
+  void add_difference(const Eigen::Vector3d& p, const Eigen::Vector3d& q) {  // += m(p) − m(q)
     const double lp = p.norm(), lq = q.norm();
     for (int k = 0; k < 6; ++k) {
       const double mp = lp > 0 ? p[row[k]] * p[col[k]] / lp : 0.0;

@@ -41,9 +41,7 @@ StressMesh StressMesh::from(const TriMesh& in) {
     const VertexId a = vertex_of[tri[0]], b = vertex_of[tri[1]], c = vertex_of[tri[2]];
     if (a == b || b == c || a == c) throw MeshError(where, "is degenerate (a vertex repeats)");
     const Eigen::Vector3d pa = in.positions[tri[0]], pb = in.positions[tri[1]], pc = in.positions[tri[2]];
-    const double area = 0.5 * (pb - pa).cross(pc - pa).norm();
-    const double scale = std::max({(pb - pa).squaredNorm(), (pc - pb).squaredNorm(), (pa - pc).squaredNorm()});
-    if (!(area > 1e-12 * scale)) throw MeshError(where, "is degenerate (zero area)");
+    if (!(triangle_shape(pa, pb, pc) > 1e-12)) throw MeshError(where, "is degenerate (zero area)");
     const FaceId f = g.add_face(a, b, c);
     if (f == SurfaceMesh::null_face())
       throw MeshError(where, "makes the mesh non-manifold (an edge already used by two triangles, a triangle of opposite orientation, or a pinched vertex)");

@@ -23,6 +23,8 @@ using StressKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<StressKernel::Point_3>;
 using VertexId = SurfaceMesh::Vertex_index;
 using FaceId = SurfaceMesh::Face_index;
+
+inline Eigen::Vector3d to_eigen(const StressKernel::Point_3& p) { return {p.x(), p.y(), p.z()}; }
 using HalfedgeId = SurfaceMesh::Halfedge_index;
 using EdgeId = SurfaceMesh::Edge_index;
 
@@ -53,10 +55,7 @@ class StressMesh {
 
   SurfaceMesh& mesh() { return *mesh_; }
   const SurfaceMesh& mesh() const { return *mesh_; }
-  Eigen::Vector3d point(VertexId v) const {
-    const auto& p = mesh_->point(v);
-    return {p.x(), p.y(), p.z()};
-  }
+  Eigen::Vector3d point(VertexId v) const { return to_eigen(mesh_->point(v)); }
   FaceState& face(FaceId f) { return face_[f]; }
   const FaceState& face(FaceId f) const { return face_[f]; }
   // Texture coordinate of target(h) as seen from face(h).
