@@ -123,6 +123,7 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
   constexpr double kNone = std::numeric_limits<double>::infinity();
   side.advances = st.elements[at].kind == ElementKind::Fracture || strained(st, at) ||
                   influence_distance(st, left, x_straight) < kNone || influence_distance(st, right, x_straight) < kNone;
+  side.lands = false;
   if (!side.advances) return;
   // Base direction: parallel to the nearest fracture of the target strip whose influence
   // reaches the tip; otherwise along the axis.
@@ -156,6 +157,7 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
   const double dtheta = (ta + tb) / (1.0 - ta * tb) * ws / radius * (side.up ? 1.0 : -1.0);
   side.x = x_of(ts, side.theta + dtheta);
   side.element = element_at(ts, side.x);
+  side.lands = st.elements[side.element].kind == ElementKind::Fracture || strained(st, side.element);
 }
 
 void StripModel::propagate_from(size_t j) {
@@ -210,6 +212,9 @@ void StripModel::propagate_from(size_t j) {
     if (side.target != SIZE_MAX) aim(j, side);
   bool changed_up = false, changed_down = false;
   for (PropagationSide& side : sides) {
+    // Most sides change nothing (their tip is not drawn across, or would cut bark that is not
+    // in tension): unless an earlier side changed their target strip, that is known already.
+    if (side.target != SIZE_MAX && !(side.up ? changed_up : changed_down) && !side.lands) continue;
     // Tested again: a merge earlier in this loop may have changed the fracture.
     if (!sharp(side.id)) continue;
     const size_t root = size_t(skeleton_.find(side.id));

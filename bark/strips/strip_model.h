@@ -217,6 +217,9 @@ class StripModel {
     bool advances = false;   // aim(): strained bark or a fracture's influence lets the tip advance
     double x = 0;            // aim(): arc position of the cut on the target strip
     size_t element = 0;      // aim(): the target element containing it
+    // aim(): it advances onto a fracture (a merge) or onto bark in tension (a break); any other
+    // side changes nothing.
+    bool lands = false;
   };
   // Epidermis element i of `s` strained enough for a fracture tip to cut it.
   bool strained(const Strip& s, size_t i) const;
