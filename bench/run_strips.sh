@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source bench/common.sh
-run() {  # scene, field resolution -> "simulate dress strips fractures" medians
+run() {  # scene, field resolution -> "simulate dress strips fractures simulate_min simulate_max" (medians)
   local sim=() dress=() s f
   for r in $(seq "$REPEAT"); do
     ./build/phellem simulate "$1" -o "$out/fields" --res "$2" --no-mesh --quiet --stats "$out/s.json"
@@ -14,14 +14,17 @@ run() {  # scene, field resolution -> "simulate dress strips fractures" medians
     dress+=("$(python3 -c "import json;print(json.load(open('$out/s.json'))['time_s']['dress'])")")
   done
   s=$(python3 -c "import json;d=json.load(open('$out/s.json'));print(d['strips'], d['fractures'])")
-  echo "$(printf '%s\n' "${sim[@]}" | median) $(printf '%s\n' "${dress[@]}" | median) $s"
+  local lo hi
+  lo=$(printf '%s\n' "${sim[@]}" | sort -g | head -1)
+  hi=$(printf '%s\n' "${sim[@]}" | sort -g | tail -1)
+  echo "$(printf '%s\n' "${sim[@]}" | median) $(printf '%s\n' "${dress[@]}" | median) $s $lo $hi"
 }
 echo "benchmark scene: 1000 strips x 500 steps, FractureField 4096x4096"
-read -r sim dress strips fr <<<"$(run bench/scenes/strips_trunk_1000x500.json 4096x4096)"
-echo "  simulate ${sim} s, dress ${dress} s (${strips} strips, ${fr} fractures)"
+read -r sim dress strips fr lo hi <<<"$(run bench/scenes/strips_trunk_1000x500.json 4096x4096)"
+echo "  simulate ${sim} s (runs ${lo}-${hi} s), dress ${dress} s (${strips} strips, ${fr} fractures)"
 ./build/phellem simulate bench/scenes/strips_trunk_1000x500.json -o "$out/mesh" --quiet --stats "$out/m.json"
 python3 -c "import json;d=json.load(open('$out/m.json'));print('  bark mesh (.glb, once): %.1f s, %d triangles' % (d['time_s']['mesh'], d['mesh_triangles']))"
-read -r sim dress strips fr <<<"$(run scenes/strips_tree.json 1024x1024)"
+read -r sim dress strips fr _ <<<"$(run scenes/strips_tree.json 1024x1024)"
 echo "whole small tree (scenes/strips_tree.json, trunk + 3 branches): simulate ${sim} s, dress ${dress} s at 1024x1024 per cylinder (${strips} strips, ${fr} fractures)"
 echo
 echo "strips  steps  fractures  simulate_s  us_per_strip_step"
@@ -33,6 +36,6 @@ s = json.load(open("bench/scenes/strips_trunk_1000x500.json"))
 s["objects"][0]["axis"] = [[0, 0, 0], [0, n * 0.005, 0]]
 json.dump(s, open(path, "w"))
 PY
-  read -r sim dress strips fr <<<"$(run "$out/scene_$n.json" 256x256)"
+  read -r sim dress strips fr _ <<<"$(run "$out/scene_$n.json" 256x256)"
   python3 -c "print(f'{$strips:6d}  500  {$fr:9d}  {$sim:10.3f}  {1e6*$sim/($strips*500):.2f}')"
 done

@@ -346,8 +346,10 @@ void StripModel::step() {
   const bool wrap = domain_.wrap_s && n > 1;
   auto strip_at = [&](size_t k) { return upward ? k : n - 1 - k; };
   const auto claimed = std::make_unique<std::atomic<char>[]>(n), grown = std::make_unique<std::atomic<char>[]>(n);
+  // The flags are read before they are claimed: a read-modify-write takes the cache line from
+  // the other core even when the strip is already taken.
   auto try_grow = [&](size_t k, int grower) {
-    if (claimed[k].exchange(1, std::memory_order_acq_rel)) return false;
+    if (claimed[k].load(std::memory_order_relaxed) || claimed[k].exchange(1, std::memory_order_acq_rel)) return false;
     const size_t j = strip_at(k);
     advance_strip(j, grower);
     grown[k].store(1, std::memory_order_release);
@@ -355,7 +357,7 @@ void StripModel::step() {
   };
   size_t ahead = 0;  // the sweep's look-ahead for strips to grow while it waits
   auto ensure_grown = [&](size_t k) {
-    if (try_grow(k, 0)) return;
+    if (grown[k].load(std::memory_order_acquire) || try_grow(k, 0)) return;
     // The helper is on it: grow a strip further ahead meanwhile rather than idle.
     ahead = std::max(ahead, k + 1);
     while (!grown[k].load(std::memory_order_acquire)) {
