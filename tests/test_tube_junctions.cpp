@@ -1,5 +1,7 @@
 // Joining a tree's tubes at their branchings (bark/geometry/tube_junctions): one closed
 // manifold surface, nothing left inside either tube, UVs from the part each face lies on.
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -32,39 +34,15 @@ TJunction t_junction(double start) {
 }
 
 int border_loops(const StressMesh& m) {
-  const SurfaceMesh& g = m.mesh();
-  std::vector<char> seen(g.number_of_halfedges(), 0);
-  int loops = 0;
-  for (auto h : g.halfedges()) {
-    if (!g.is_border(h) || seen[h.idx()]) continue;
-    ++loops;
-    for (auto k : CGAL::halfedges_around_face(h, g)) seen[k.idx()] = 1;
-  }
-  return loops;
+  std::vector<SurfaceMesh::Halfedge_index> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(m.mesh(), std::back_inserter(cycles));
+  return int(cycles.size());
 }
 
 int face_components(const StressMesh& m) {
-  const SurfaceMesh& g = m.mesh();
-  std::vector<int> seen(g.number_of_faces(), 0);
-  int components = 0;
-  for (FaceId start : g.faces()) {
-    if (seen[start.idx()]) continue;
-    ++components;
-    std::vector<FaceId> stack{start};
-    seen[start.idx()] = 1;
-    while (!stack.empty()) {
-      const FaceId f = stack.back();
-      stack.pop_back();
-      for (auto h : CGAL::halfedges_around_face(g.halfedge(f), g)) {
-        const FaceId n = g.face(g.opposite(h));
-        if (n != SurfaceMesh::null_face() && !seen[n.idx()]) {
-          seen[n.idx()] = 1;
-          stack.push_back(n);
-        }
-      }
-    }
-  }
-  return components;
+  SurfaceMesh g = m.mesh();  // a copy to hang the component map on
+  auto component = g.add_property_map<FaceId, std::size_t>("f:component").first;
+  return int(CGAL::Polygon_mesh_processing::connected_components(g, component));
 }
 
 TEST(TubeJunctions, BranchIsStitchedIntoItsParentWithNothingInside) {
