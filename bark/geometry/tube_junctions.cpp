@@ -181,7 +181,10 @@ JoinedTubes join_tubes(const std::vector<TriMesh>& parts, const std::vector<int>
   for (auto h : borders) {
     std::vector<FaceId> added;
     std::vector<VertexId> inside;
-    PMP::triangulate_and_refine_hole(surface, h, std::back_inserter(added), std::back_inserter(inside));
+    // Without the 3D Delaunay search, whose result varied from run to run (CGAL 5.5): the
+    // caps, and with them the whole cracked tree, must not depend on the run.
+    PMP::triangulate_and_refine_hole(surface, h, std::back_inserter(added), std::back_inserter(inside),
+                                     CGAL::parameters::use_delaunay_triangulation(false));
     out.caps += added.empty() ? 0 : 1;
   }
   // Texture coordinates: each face belongs to the part whose surface it lies on, and each corner
