@@ -1,5 +1,6 @@
 #include "cli/options.h"
 
+#include <cctype>
 #include <charconv>
 
 #include "renderer/errors.h"
@@ -16,6 +17,14 @@ long long integer(const std::string& opt, const std::string& v, long long lo, lo
   if (ec != std::errc() || p != v.data() + v.size()) bad(opt, "expected an integer, got \"" + v + "\"");
   if (x < lo || x > hi) bad(opt, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v);
   return x;
+}
+
+// Output names are checked before any work: a wrong extension found only when the file is
+// written would cost the whole render.
+void need_extension(const std::string& opt, const std::string& file, const std::string& ext) {
+  std::string tail = file.size() >= ext.size() ? file.substr(file.size() - ext.size()) : std::string();
+  for (char& c : tail) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (tail != ext) bad(opt, "expected a " + ext + " file name, got \"" + file + "\"");
 }
 
 }  // namespace
@@ -84,11 +93,17 @@ Options parse(const std::vector<std::string>& args) {
     if (o.exr.empty()) bad("-o", "required for simulate: the output folder");
     if (o.spp || !o.png.empty()) bad(o.spp ? "--spp" : "--png", "not an option of simulate");
   }
+  if (o.command == "render") {
+    if (!o.exr.empty()) need_extension("-o", o.exr, ".exr");
+    if (!o.png.empty()) need_extension("--png", o.png, ".png");
+  }
   if (frames) {
     if (o.scene.empty()) bad(o.command, "a scene file is required");
     if (!o.frames) bad("--frames", "required for " + o.command);
     if (o.exr.empty()) bad("-o", "required for " + o.command + ": a pattern such as out/frame_%04d.exr");
     if (o.exr.find('%') == std::string::npos) bad("-o", "the output pattern needs a frame number field such as %04d");
+    need_extension("-o", o.exr, ".exr");
+    if (!o.mp4.empty()) need_extension("--mp4", o.mp4, ".mp4");
   }
   return o;
 }

@@ -98,6 +98,13 @@ TEST(Cli, BadOptionsExitTwo) {
   const auto t = test::run_phellem("turntable " PHELLEM_SOURCE_DIR "/scenes/default.json --frames 2 -o /tmp/frame.exr");
   EXPECT_EQ(t.exit_code, 2);
   EXPECT_NE(t.output.find("frame number field"), std::string::npos) << t.output;
+  // A wrong output name is refused before the render, not after it.
+  const auto png = test::run_phellem("render -o /tmp/phellem_never.png");
+  EXPECT_EQ(png.exit_code, 2);
+  EXPECT_NE(png.output.find("phellem: error: <command line>: -o: expected a .exr file name, got \"/tmp/phellem_never.png\""), std::string::npos) << png.output;
+  EXPECT_NE(test::run_phellem("render --png /tmp/phellem_never.exr").output.find("expected a .png file name"), std::string::npos);
+  EXPECT_EQ(test::run_phellem("turntable " PHELLEM_SOURCE_DIR "/scenes/default.json --frames 2 -o /tmp/f_%04d.tif").exit_code, 2);
+  EXPECT_EQ(test::run_phellem("turntable " PHELLEM_SOURCE_DIR "/scenes/default.json --frames 2 -o /tmp/f_%04d.exr --mp4 /tmp/t.gif").exit_code, 2);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <memory>
 
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/geometry/tube_junctions.h"
@@ -89,6 +90,23 @@ TEST(TubeJunctions, ABranchThatMissesItsParentIsKeptApartAndNamed) {
   const StressMesh m = StressMesh::from(j.mesh);
   EXPECT_EQ(face_components(m), 2);
   EXPECT_EQ(border_loops(m), 0);
+}
+
+TEST(TubeJunctions, SameTubesGiveTheSameSurfaceWhateverTheHeap) {
+  // Determinism: nothing in the join may depend on where its buffers happen to be allocated
+  // (CGAL orders corefinement boxes by their address) or on state left by an earlier call.
+  const TJunction t = t_junction(0.0);
+  const JoinedTubes a = join_tubes(t.parts, t.parent);
+  std::vector<std::unique_ptr<std::vector<char>>> clutter;  // moves later allocations around
+  for (int round = 0; round < 8; ++round) {
+    for (size_t k = 0; k < 64; ++k) clutter.push_back(std::make_unique<std::vector<char>>(size_t(1000 * (k % 7 + 1)) << round));
+    for (size_t k = 0; k < clutter.size(); k += 3) clutter[k].reset();
+    const JoinedTubes b = join_tubes(t.parts, t.parent);
+    ASSERT_EQ(a.mesh.triangles.size(), b.mesh.triangles.size()) << round;
+    ASSERT_EQ(a.mesh.triangles, b.mesh.triangles);
+    EXPECT_EQ(a.mesh.positions, b.mesh.positions);
+    EXPECT_EQ(a.mesh.uvs, b.mesh.uvs);
+  }
 }
 
 }  // namespace

@@ -12,8 +12,11 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "bark/stress/stress_mesh.h"
 
@@ -49,6 +52,42 @@ void remove_components(SurfaceMesh& m, const SurfaceMesh::Property_map<FaceId, s
   if (drop.empty()) return;
   PMP::remove_connected_components(m, drop, component);
   m.collect_garbage();
+}
+
+// The mesh rebuilt with its vertices in lexicographic order of position and its faces in order
+// of their corners, keeping the edges flagged in `flag`. CGAL's corefinement numbers what it
+// makes in an order that depends on where its boxes were allocated (it breaks ties between
+// boxes by address), so the same tubes came out in different orders from call to call; every
+// step after it (stitching, sliver repair, caps, the output's order) follows that numbering.
+// Empty if the faces do not make a manifold surface again.
+std::optional<SurfaceMesh> canonical(const SurfaceMesh& m, SurfaceMesh::Property_map<EdgeId, bool>& flag) {
+  using Key = std::array<double, 3>;
+  auto key = [&](VertexId v) { return Key{m.point(v).x(), m.point(v).y(), m.point(v).z()}; };
+  std::vector<VertexId> order(m.vertices().begin(), m.vertices().end());
+  std::sort(order.begin(), order.end(), [&](VertexId a, VertexId b) { return key(a) < key(b); });
+  SurfaceMesh out;
+  std::vector<VertexId> renamed(m.number_of_vertices() + m.number_of_removed_vertices());
+  for (VertexId v : order) renamed[v.idx()] = out.add_vertex(m.point(v));
+  // Each face as its corners' new numbers, turned to start at the smallest (orientation kept).
+  std::vector<std::array<VertexId, 3>> faces;
+  for (FaceId f : m.faces()) {
+    std::array<VertexId, 3> c;
+    int k = 0;
+    for (VertexId v : CGAL::vertices_around_face(m.halfedge(f), m)) c[size_t(k++)] = renamed[v.idx()];
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    faces.push_back(c);
+  }
+  std::sort(faces.begin(), faces.end());
+  for (const auto& c : faces)
+    if (out.add_face(c[0], c[1], c[2]) == SurfaceMesh::null_face()) return std::nullopt;
+  auto out_flag = out.add_property_map<EdgeId, bool>("e:junction", false).first;
+  for (EdgeId e : m.edges())
+    if (flag[e]) {
+      const auto [h, found] = CGAL::halfedge(renamed[m.vertex(e, 0).idx()], renamed[m.vertex(e, 1).idx()], out);
+      if (found) out_flag[out.edge(h)] = true;
+    }
+  flag = out_flag;
+  return out;
 }
 
 // Whether a face is a sliver by StressMesh::from's measure, with margin (StressMesh refuses
@@ -113,6 +152,11 @@ std::string join_branch(SurfaceMesh& surface, SurfaceMesh branch) {
   } catch (const std::exception& e) {
     return apart(std::string("CGAL could not intersect it with its parent (") + e.what() + ")");
   }
+  auto surface_c = canonical(surface, on_curve_s);
+  auto branch_c = canonical(branch, on_curve_b);
+  if (!surface_c || !branch_c) return apart("CGAL's intersection with its parent is not a manifold surface");
+  surface = std::move(*surface_c);
+  branch = std::move(*branch_c);
   auto comp_s = surface.add_property_map<FaceId, std::size_t>("f:junction_component").first;
   auto comp_b = branch.add_property_map<FaceId, std::size_t>("f:junction_component").first;
   const std::size_t ns = PMP::connected_components(surface, comp_s, CGAL::parameters::edge_is_constrained_map(on_curve_s));
