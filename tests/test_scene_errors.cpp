@@ -88,6 +88,16 @@ TEST(Cli, FailedRunLeavesEarlierOutputUntouched) {
   EXPECT_EQ(content, "previous render");
 }
 
+TEST(Cli, TreeTooLargeForItsStripBarkExitsTwoAtOnce) {
+  // A radius in millimetres where metres were meant: refused with the JSON path, not a hang.
+  const std::string dir = test::temp_dir("cli_huge_tree");
+  test::write_text(dir + "/huge.json", R"({"objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 2, 0]], "radius": [300],
+                                          "bark": {"model": "strips", "preset": "furrowed"}}]})");
+  const auto r = test::run_phellem("simulate " + dir + "/huge.json -o " + dir + "/out --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("huge.json: /objects/0/bark/element_length: element_length: must be at least"), std::string::npos) << r.output;
+}
+
 TEST(Cli, BadOptionsExitTwo) {
   EXPECT_EQ(test::run_phellem("render --spp zero").exit_code, 2);
   EXPECT_EQ(test::run_phellem("render --res 100").exit_code, 2);

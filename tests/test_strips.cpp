@@ -170,6 +170,29 @@ TEST(StripModel, ThresholdOutsideTheValidRangeIsRefusedWithTheRange) {
   EXPECT_GT(valid_threshold_range(p, p.stiffness).low, *p.threshold);
 }
 
+TEST(StripModel, BarkTooLargeToSimulateIsRefusedWithTheSizeThatWouldFit) {
+  // A typo'd radius or axis (metres for millimetres) must not overflow the strip count or
+  // run out of memory: the size that would fit is named instead.
+  const StripParams p = small_params();
+  try {
+    flat_domain(0.1, 1e5, p);  // 10^7 strips of 1 cm
+    FAIL() << "no error";
+  } catch (const StripParamError& e) {
+    EXPECT_EQ(e.key, "strip_width");
+    EXPECT_NE(e.message.find("more than the 1e+06"), std::string::npos) << e.message;
+    EXPECT_NE(e.message.find("must be at least 0.1 m"), std::string::npos) << e.message;
+  }
+  try {
+    StripModel m(flat_domain(1e6, 0.1, p), p);  // strips 1000 km long
+    FAIL() << "no error";
+  } catch (const StripParamError& e) {
+    EXPECT_EQ(e.key, "element_length");
+    EXPECT_NE(e.message.find("more than the 2e+07"), std::string::npos) << e.message;
+  }
+  // Just inside both limits, the domain is built.
+  EXPECT_EQ(flat_domain(0.1, 0.9999e6 * p.strip_width, p, 1).strips.size(), 999900u);
+}
+
 TEST(StripModel, FracturesPerStepStayBoundedInsideTheValidRange) {
   for (double noise : {0.0, 0.5, 0.9})
     for (double kf : {0.02, 0.5, 2.0})

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace phellem::bark {
 
@@ -29,7 +30,17 @@ void fill_exponents(const StripParams& p, StripMetric& m, int bins) {
   for (int k = 0; k < bins; ++k) m.exponent[size_t(k)] = 1.0 + dilatation(p, m.s, kTwoPi * (k + 0.5) / bins);
 }
 
-int strip_count(double length, double width) { return std::max(1, int(std::lround(length / width))); }
+// Refuses (rather than overflowing, or running for days) more strips than kMaxStrips.
+int strip_count(double length, double width) {
+  const double n = length / width;
+  if (!(n <= kMaxStrips)) {
+    std::ostringstream m;
+    m << "must be at least " << length / kMaxStrips << " m here: the bark is " << length << " m across its strips, and " << width
+      << " m strips would make " << n << " of them, more than the " << kMaxStrips << " a simulation allows";
+    throw StripParamError{"strip_width", m.str()};
+  }
+  return std::max(1, int(std::lround(n)));
+}
 
 }  // namespace
 

@@ -32,6 +32,10 @@ struct StripDomain {
   int bins() const { return strips.empty() ? 0 : int(strips[0].bin_length.size()); }
 };
 
+// The domain builders throw StripParamError (key strip_width) rather than make more strips
+// than this: 10^6 strips of 5 mm span a 5 km trunk.
+inline constexpr double kMaxStrips = 1e6;
+
 // Strips over a generalized cylinder: strip_width from the params, M angular bins.
 StripDomain cylinder_domain(const GeneralizedCylinder& cylinder, const StripParams& p, int bins = 64);
 // Strips along the axis of a generalized cylinder (FractureOrientation::Horizontal): about

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <thread>
 
 #include "bark/strips/strip_equilibrium.h"
@@ -20,6 +21,18 @@ constexpr double kTwoPi = 6.283185307179586;
 StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::move(domain)), params_(std::move(params)) {
   if (auto e = validate(params_)) throw *e;
   const size_t n = domain_.strips.size();
+  // Elements at the final size, before fractures add theirs (about as many again): refused
+  // beyond a budget rather than exhausting memory.
+  double final_elements = 0;
+  for (const StripMetric& m : domain_.strips)
+    for (double b : m.bin_length) final_elements += b / params_.element_length;
+  if (!(final_elements <= kMaxElements)) {
+    std::ostringstream m;
+    m << "must be at least " << params_.element_length * final_elements / kMaxElements << " m here: " << n
+      << " strips of this bark would hold " << final_elements << " elements of " << params_.element_length
+      << " m at their final size, more than the " << kMaxElements << " a simulation allows";
+    throw StripParamError{"element_length", m.str()};
+  }
   strips_.resize(n);
   cum_.resize(n);
   epidermis0_.resize(n);

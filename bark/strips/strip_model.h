@@ -54,9 +54,14 @@ struct PropagationExit {
   double theta = 0;  // where it leaves
 };
 
+// Most epidermis elements a model may have at its final size (fractures add about as many
+// again): about 3 GB. The 1000-strip benchmark trunk has 9.4·10^4.
+inline constexpr double kMaxElements = 2e7;
+
 class StripModel {
  public:
-  // Throws StripParamError when a parameter is outside its valid range.
+  // Throws StripParamError when a parameter is outside its valid range, or when the strips
+  // would hold more than kMaxElements elements.
   StripModel(StripDomain domain, StripParams params);
 
   // One growth step (Figure 8 for every strip, then propagation). The step's last stage,
