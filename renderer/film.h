@@ -16,6 +16,9 @@ struct Film {
   std::vector<float> object_id;  // id: 1-based object index of the first sample (0: none)
   std::vector<float> crack;      // bark fracture coverage and normalized depth (0 off bark)
 
+  // Floats per pixel over all the layers above.
+  static constexpr size_t kChannels = 4 + 3 + 3 + 1 + 3 + 1 + 2;
+
   Film() = default;
   Film(int w, int h)
       : width(w), height(h), beauty(size_t(w) * h * 4), albedo(size_t(w) * h * 3), normal(size_t(w) * h * 3),

@@ -1,5 +1,6 @@
 // Every documented scene error: exit code 2 and a message naming the file and JSON path.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -96,6 +97,20 @@ TEST(Cli, TreeTooLargeForItsStripBarkExitsTwoAtOnce) {
   const auto r = test::run_phellem("simulate " + dir + "/huge.json -o " + dir + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("huge.json: /objects/0/bark/element_length: element_length: must be at least"), std::string::npos) << r.output;
+}
+
+TEST(Cli, FilmLargerThanMemoryIsRefusedBeforeRendering) {
+  // 32768 x 32768 pixels of 17 floats, twice: 136 GiB.
+  const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (physical > 2.0 * 32768.0 * 32768.0 * 68.0) GTEST_SKIP() << "this machine has the memory for the film";
+  const auto r = test::run_phellem("render --res 32768x32768 --spp 1 -o /tmp/phellem_never.exr --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("phellem: error: <command line>: --res: a 32768x32768 film needs 136.0 GiB of memory"), std::string::npos) << r.output;
+  const std::string dir = test::temp_dir("cli_big_film");
+  test::write_text(dir + "/big.json", R"({"render": {"resolution": [32768, 32768], "spp": 1}})");
+  const auto s = test::run_phellem("render " + dir + "/big.json -o " + dir + "/out.exr --quiet");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.output.find(dir + "/big.json: /render/resolution: a 32768x32768 film needs"), std::string::npos) << s.output;
 }
 
 TEST(Cli, BadOptionsExitTwo) {
