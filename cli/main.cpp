@@ -128,10 +128,10 @@ int main(int argc, char** argv) {
     if (o.command == "growth") return run_growth(o);
     return o.command == "render" ? run_render(o) : run_turntable(o);
   } catch (const UserError& e) {
-    std::cerr << "phellem: error: " << e.what() << "\n";
+    std::cerr << "phellem: error: " << printable(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "phellem: internal error: " << e.what() << "\n";
+    std::cerr << "phellem: internal error: " << printable(e.what()) << "\n";
     return 1;
   }
 }

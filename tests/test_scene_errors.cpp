@@ -113,6 +113,28 @@ TEST(Cli, FilmLargerThanMemoryIsRefusedBeforeRendering) {
   EXPECT_NE(s.output.find(dir + "/big.json: /render/resolution: a 32768x32768 film needs"), std::string::npos) << s.output;
 }
 
+TEST(Errors, PrintableEscapesWhatATerminalCannotShow) {
+  EXPECT_EQ(printable("θ × ≤ 1\tok\n"), "θ × ≤ 1\tok\n");  // valid UTF-8, tab and newline pass
+  EXPECT_EQ(printable("key\xEF'"), "key\\xEF'");              // a lone lead byte
+  EXPECT_EQ(printable("\x1B[31mred"), "\\x1B[31mred");         // a terminal escape
+  EXPECT_EQ(printable("\xC0\xAF"), "\\xC0\\xAF");            // an overlong '/'
+  EXPECT_EQ(printable("\xED\xA0\x80"), "\\xED\\xA0\\x80");  // a UTF-16 surrogate
+  EXPECT_EQ(printable("end\xE2\x88"), "end\\xE2\\x88");        // a sequence cut short
+  EXPECT_EQ(printable("\xF0\x9F\x8C\xB3"), "\xF0\x9F\x8C\xB3");  // U+1F333 passes
+}
+
+TEST(Cli, ErrorQuotingABrokenFileIsPrintable) {
+  // A glTF whose JSON holds a byte that is not UTF-8: the parser's message quotes it.
+  const std::string dir = test::temp_dir("cli_bad_bytes");
+  test::write_text(dir + "/m.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"buf\xEF" "fers\": []}");
+  test::write_text(dir + "/s.json", R"({"objects": [{"type": "mesh", "file": "m.gltf"}]})");
+  const auto r = test::run_phellem("render " + dir + "/s.json -o " + dir + "/o.exr --quiet");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("phellem: error: " + dir + "/m.gltf"), std::string::npos) << r.output;
+  EXPECT_EQ(printable(r.output), r.output) << "not printable: " << printable(r.output);
+  EXPECT_NE(r.output.find("\\xEF"), std::string::npos) << r.output;
+}
+
 TEST(Cli, BadOptionsExitTwo) {
   EXPECT_EQ(test::run_phellem("render --spp zero").exit_code, 2);
   EXPECT_EQ(test::run_phellem("render --res 100").exit_code, 2);
