@@ -107,35 +107,49 @@ FractureMesh mesh_fracture_field(const FractureField& f, double max_depth, const
     auto iso = contour_loops(f.depth, W, H, float(lv * max_depth));
     lines.insert(lines.end(), iso.begin(), iso.end());
   }
-  CDT cdt;
+  // Every point first (one spatially sorted insertion), then the constraints between them by
+  // index: inserting segment by segment located each end from scratch, which took minutes on
+  // large fields.
+  std::vector<K::Point_2> points;
+  std::vector<std::pair<size_t, size_t>> segments;
+  auto add = [&](double x, double y) {
+    points.emplace_back(x, y);
+    return points.size() - 1;
+  };
   std::vector<double> seam_y;
   for (int y = 0; y <= H; y += grid) seam_y.push_back(y);
   seam_y.push_back(H);
   for (int x = 0; x <= W; x += grid) {
-    cdt.insert(K::Point_2(x, 0));
-    cdt.insert(K::Point_2(x, H));
+    add(x, 0);
+    add(x, H);
   }
   for (int y = grid; y < H; y += grid)
-    for (int x = grid; x < W; x += grid) cdt.insert(K::Point_2(x, y));
-  for (const auto& loop : lines)
+    for (int x = grid; x < W; x += grid) add(x, y);
+  for (const auto& loop : lines) {
+    const size_t first = points.size();
+    for (const Eigen::Vector2d& p : loop) add(p.x(), p.y());
     for (size_t k = 0; k < loop.size(); ++k) {
+      const size_t ia = first + k, ib = first + (k + 1) % loop.size();
       const Eigen::Vector2d a = loop[k], b = loop[(k + 1) % loop.size()];
       if (std::abs(b.x() - a.x()) <= 0.5 * W) {
-        if ((a - b).squaredNorm() > 1e-18) cdt.insert_constraint(K::Point_2(a.x(), a.y()), K::Point_2(b.x(), b.y()));
+        if ((a - b).squaredNorm() > 1e-18) segments.emplace_back(ia, ib);
         continue;
       }
       // Across the seam: split at x = W ≡ 0, the same height on both sides.
       const bool rightwards = a.x() > b.x();  // a near W, b near 0
       const double bx = rightwards ? b.x() + W : b.x() - W, edge = rightwards ? W : 0.0;
       const double y = a.y() + (edge - a.x()) / (bx - a.x()) * (b.y() - a.y());
-      cdt.insert_constraint(K::Point_2(a.x(), a.y()), K::Point_2(edge, y));
-      cdt.insert_constraint(K::Point_2(W - edge, y), K::Point_2(b.x(), b.y()));
+      segments.emplace_back(ia, add(edge, y));
+      segments.emplace_back(add(W - edge, y), ib);
       seam_y.push_back(y);
     }
-  for (double y : seam_y) {  // both sides of the seam carry the same vertices
-    cdt.insert(K::Point_2(0, y));
-    cdt.insert(K::Point_2(W, y));
   }
+  for (double y : seam_y) {  // both sides of the seam carry the same vertices
+    add(0, y);
+    add(W, y);
+  }
+  CDT cdt;
+  cdt.insert_constraints(points.begin(), points.end(), segments.begin(), segments.end());
   int id = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     v->info() = id++;
