@@ -74,10 +74,14 @@ int run_simulate(const cli::Options& o) {
     t_sim += since(ts);
     const std::string base = obj.name.empty() ? "tree" + std::to_string(oi) : obj.name;
     for (size_t k = 0; k < sim.parts(); ++k) {
+      // Stages, not a smooth bar: the field, its EXR, the mesh (the writes are one call each).
+      Progress bar("dress " + base + "_" + sim.part_name(k), o.no_mesh ? 2 : 3, !o.quiet);
       const auto td = Clock::now();
       const bark::FractureField field = sim.field(k, o.width.value_or(0), o.height.value_or(0));
+      bar.advance();
       const std::string file = (dir / (base + "_" + sim.part_name(k) + ".exr")).string();
       write_field(field, file);
+      bar.advance();
       t_dress += since(td);
       const bark::StripModel& model = sim.bark().model(k);
       strips += long(model.strips().size());
@@ -99,7 +103,9 @@ int run_simulate(const cli::Options& o) {
         mesh_triangles += (long long)mesh.triangle_count();
         meshes.push_back(glb);
         t_mesh += since(tm);
+        bar.advance();
       }
+      bar.finish();
     }
     crossings += long(sim.bark().crossings().size());
   }

@@ -10,7 +10,9 @@ bool Progress::terminal_attached() { return isatty(STDERR_FILENO) == 1; }
 
 Progress::Progress(std::string label, long long total, bool enabled)
     : label_(std::move(label)), total_(std::max(1LL, total)), enabled_(enabled && terminal_attached()),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+      start_(std::chrono::steady_clock::now()), last_(start_) {
+  if (enabled_) draw(0, false);  // the stage shows as soon as it starts
+}
 
 Progress::~Progress() { finish(); }
 
