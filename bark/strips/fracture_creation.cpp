@@ -46,7 +46,9 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   s.x.insert(s.x.begin() + long(i) + 1, {xb, xb});
   s.anchor.insert(s.anchor.begin() + long(i) + 1, {xb, xb});
   const bool eliminated = factors_[j].valid;
-  const bool inside = s.cyclic && i + 3 < s.size();  // not the last element of a cyclic strip
+  // Not the last element of a cyclic strip, nor either end element of an open one (whose end
+  // nodes are fixed).
+  const bool inside = i + 3 < s.size() && (s.cyclic || i > 0);
   if (inside && params_.attachment > 0) {
     // Only nodes i..i+3 change: each holds the shares of the elements either side (the sums
     // update_attachment makes).
@@ -58,9 +60,9 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   }
   // Rows before node i of the eliminated matrix are unchanged (elements and attachment before
   // element i are), unless the break is at either end of a cyclic strip (rows 0 and n-1 hold
-  // its corners).
+  // its corners); an open strip's row r is node r + 1.
   factors_[j].valid = false;
-  factors_[j].kept = eliminated && inside && i > 0 ? i : 0;
+  factors_[j].kept = eliminated && inside && i > 0 ? (s.cyclic ? i : i - 1) : 0;
   solve(j);
   ++breaks_[j];
   for (FreeEnd& t : tips_[j])

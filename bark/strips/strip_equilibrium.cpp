@@ -78,7 +78,7 @@ void factor_open(const Strip& s, EquilibriumFactor& f) {
   auto k = [&](size_t i) { return s.elements[i].stiffness; };
   f.inv.resize(m);
   f.cprime.resize(m);
-  for (size_t r = 0; r < m; ++r) {
+  for (size_t r = std::min(f.kept, m); r < m; ++r) {
     const double d = k(r) + k(r + 1) + s.attach[r + 1];
     f.inv[r] = 1.0 / (r == 0 ? d : d + k(r) * f.cprime[r - 1]);
     f.cprime[r] = -k(r + 1) * f.inv[r];

@@ -19,7 +19,7 @@ struct EquilibriumFactor {
   double denominator = 0;           // cyclic strips: 1 + vᵀ A'^-1 u
   double gamma = 0;                 // cyclic strips: γ = -A[0][0]
   bool valid = false;
-  // When not valid: rows [0, kept) of a cyclic strip's inv and cprime still hold (their
+  // When not valid: rows [0, kept) of inv and cprime still hold (their
   // elements and attachment did not change, e.g. before a break further along the strip), so
   // elimination resumes there; the Sherman–Morrison vector is redone in full.
   size_t kept = 0;
