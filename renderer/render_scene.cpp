@@ -12,6 +12,7 @@
 #include "renderer/mesh_io.h"
 #include "renderer/crack_profile.h"
 #include "renderer/mesh_source.h"
+#include "renderer/progress.h"
 #include "renderer/stress_bark_run.h"
 #include "renderer/strip_bark_tree.h"
 #include "renderer/tessellation.h"
@@ -412,6 +413,8 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
     }
   }
 
+  // One bar over the dicing jobs and the BVH build (a job is one displaced surface).
+  Progress bar("tessellate", (long long)jobs.size() + 1, opts.progress);
   // Adaptive tessellation under the triangle budget: coarsen uniformly until the estimate fits.
   if (!jobs.empty()) {
     for (int iter = 0; iter < 8; ++iter) {
@@ -435,6 +438,7 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
       stats_.diced_triangles += m.triangle_count();
       stats_.diced_bytes += m.memory_bytes();
       add_top(std::move(m), j.material, j.object_id, j.bark, j.crack_darkening);
+      bar.advance();
     }
   }
   stats_.tessellate_s = seconds_since(t0) - (opts.bark_seconds - bark_before);  // bark simulation reported apart
@@ -443,6 +447,8 @@ RenderScene::RenderScene(const SceneDesc& desc, const CameraDesc& dicing_cam, in
   rtcSetSceneBuildQuality(scene_.get(), RTC_BUILD_QUALITY_MEDIUM);
   rtcCommitScene(scene_.get());
   stats_.bvh_s = seconds_since(t1);
+  bar.advance();
+  bar.finish();
   check_embree(*embree_errors_);
   stats_.embree_bytes = size_t(embree_bytes_peak_->load());
 
