@@ -23,7 +23,10 @@ StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint
   if (seed) params.seed = *seed;
   StressRun run;
   const auto tp = Clock::now();
+  // Stages: the surface (a tree's tubes joined), the remeshing, the stress mesh and its set-up.
+  Progress prepare("prepare " + name, 3, progress);
   bark::TriMesh input = object_trimesh(obj);
+  prepare.advance();
   // The mesh's own problems are reported at the mesh file, or at the object for procedural ones.
   bark::StressMesh mesh = [&] {
     try {
@@ -34,6 +37,7 @@ StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint
         ro.seed = params.seed;
         input = bark::irregular_remesh(input, ro);
       }
+      prepare.advance();
       return bark::StressMesh::from(input);
     } catch (const bark::MeshError& e) {
       if (e.where == "edge_length") throw UserError(desc.file, where + "/bark/preprocess/edge_length", e.what());
@@ -50,6 +54,8 @@ StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint
   } catch (const bark::StressParamError& e) {
     throw UserError(desc.file, where + "/bark/" + e.key, e.key + ": " + e.message);
   }
+  prepare.advance();
+  prepare.finish();
   {
     Progress bar("crack " + name, params.iterations, progress);
     cracker->run([&](int, int) { bar.advance(); });
