@@ -111,6 +111,46 @@ TEST(StripEquilibrium, CyclicMatchesDenseSolveOfThePaperEquations) {
   }
 }
 
+TEST(StripEquilibrium, ResumedEliminationGivesTheBitsOfAFreshOne) {
+  // A break changes the elements from index i on: the eliminated rows before it are kept
+  // (rows [0, i) of a cyclic strip, [0, i - 1) of an open one, whose row r is node r + 1) and
+  // elimination resumes there. The solve must be the one a fresh elimination gives.
+  for (bool cyclic : {true, false}) {
+    const size_t n = 16, nodes = cyclic ? n : n + 1, i = 7;
+    std::vector<double> rest(n), K(n), attach(nodes);
+    for (size_t k = 0; k < n; ++k) rest[k] = 0.01 * (1.0 + 0.1 * double(k % 3)), K[k] = 1.0 + 0.37 * double(k % 5);
+    for (size_t k = 0; k < nodes; ++k) attach[k] = 0.2 + 0.05 * double(k % 4);
+    if (!cyclic) attach.front() = attach.back() = 0;
+    Strip s = make_strip(cyclic, rest, K, 0.2, attach);
+    for (size_t k = 0; k < nodes; ++k) s.anchor[k] += 0.001 * std::sin(double(k));
+    EquilibriumFactor f;
+    solve_equilibrium(s, &f);
+    ASSERT_TRUE(f.valid);
+    // Split element i in two stiffer halves with a soft element between (what a break does).
+    Element left = s.elements[i], right = left, middle;
+    left.rest = right.rest = 0.5 * s.elements[i].rest;
+    left.stiffness = right.stiffness = 2 * s.elements[i].stiffness;
+    middle.kind = ElementKind::Fracture;
+    middle.stiffness = 0.3;
+    s.elements[i] = left;
+    s.elements.insert(s.elements.begin() + long(i) + 1, {middle, right});
+    const double xb = s.x[i] + 0.5 * (s.x[i + 1] - s.x[i]);
+    s.x.insert(s.x.begin() + long(i) + 1, {xb, xb});
+    s.anchor.insert(s.anchor.begin() + long(i) + 1, {xb, xb});
+    s.attach.insert(s.attach.begin() + long(i) + 1, {0.0, 0.0});
+    s.attach[i + 1] = 0.15;
+    s.attach[i + 2] = 0.15;  // nodes from i on may change; those before may not
+    Strip fresh = s;
+    f.valid = false;
+    f.kept = cyclic ? i : i - 1;
+    solve_equilibrium(s, &f);
+    solve_equilibrium(fresh);
+    ASSERT_EQ(s.x.size(), fresh.x.size());
+    for (size_t k = 0; k < s.x.size(); ++k) EXPECT_EQ(s.x[k], fresh.x[k]) << (cyclic ? "cyclic" : "open") << " node " << k;
+    EXPECT_LT(equilibrium_residual(s), 1e-12);
+  }
+}
+
 TEST(StripEquilibrium, UniformTensionWhenNothingIsAttached) {
   Strip s = make_strip(true, {0.3, 0.2, 0.4, 0.1}, {1, 3, 0.5, 2}, 1.2);
   solve_equilibrium(s);
