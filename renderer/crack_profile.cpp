@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "renderer/noise.h"
 
@@ -23,6 +24,10 @@ CrackProfile::CrackProfile(const bark::CrackedMesh& c, const CrackLook& look, ui
   cell_ = std::max(reach_, 1e-4f);
   for (uint32_t i = 0; i < seg_.size(); ++i) {
     const Vec3f lo = seg_[i].a.cwiseMin(seg_[i].b).array() - reach_, hi = seg_[i].a.cwiseMax(seg_[i].b).array() + reach_;
+    if (!(cells_spanned(lo, hi) <= kMaxCells)) {
+      long_.push_back(i);
+      continue;
+    }
     for (int x = int(std::floor(lo.x() / cell_)); x <= int(std::floor(hi.x() / cell_)); ++x)
       for (int y = int(std::floor(lo.y() / cell_)); y <= int(std::floor(hi.y() / cell_)); ++y)
         for (int z = int(std::floor(lo.z() / cell_)); z <= int(std::floor(hi.z() / cell_)); ++z) grid_[cell_key(x, y, z)].push_back(i);
@@ -38,8 +43,27 @@ int64_t CrackProfile::cell_key(int x, int y, int z) const {
   return (int64_t(x) & 0x1fffff) | ((int64_t(y) & 0x1fffff) << 21) | ((int64_t(z) & 0x1fffff) << 42);
 }
 
+double CrackProfile::cells_spanned(const Vec3f& lo, const Vec3f& hi) const {
+  double cells = 1;
+  for (int k = 0; k < 3; ++k) {
+    const double a = std::floor(double(lo[k]) / cell_), b = std::floor(double(hi[k]) / cell_);
+    if (!(std::abs(a) < 1e9 && std::abs(b) < 1e9)) return std::numeric_limits<double>::infinity();
+    cells *= b - a + 1;
+  }
+  return cells;
+}
+
 template <class F>
 void CrackProfile::for_near(const Vec3f& lo, const Vec3f& hi, F&& f) const {
+  // Every segment near the box, some more than once or farther (f measures): the few long
+  // ones, then the grid's cells under the box — or every segment when the box spans too many.
+  if (!(cells_spanned(lo, hi) <= kMaxCells)) {
+    for (uint32_t i = 0; i < seg_.size(); ++i)
+      if (f(i)) return;
+    return;
+  }
+  for (uint32_t i : long_)
+    if (f(i)) return;
   for (int x = int(std::floor(lo.x() / cell_)); x <= int(std::floor(hi.x() / cell_)); ++x)
     for (int y = int(std::floor(lo.y() / cell_)); y <= int(std::floor(hi.y() / cell_)); ++y)
       for (int z = int(std::floor(lo.z() / cell_)); z <= int(std::floor(hi.z() / cell_)); ++z) {

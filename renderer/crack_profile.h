@@ -55,6 +55,12 @@ class CrackProfile {
   float reach_ = 0, cell_ = 1;
   std::vector<Segment> seg_;
   std::unordered_map<int64_t, std::vector<uint32_t>> grid_;
+  // Segments whose box spans more than kMaxCells grid cells (a mesh at a scale far from the
+  // cracks' width): visited by every query instead of filling the grid.
+  std::vector<uint32_t> long_;
+  // Grid cells spanned by a box, or infinity when its cell indices would leave int range.
+  double cells_spanned(const Vec3f& lo, const Vec3f& hi) const;
+  static constexpr double kMaxCells = 4096;
   Triangles triangles_;
   std::unique_ptr<Tree> tree_;
 };

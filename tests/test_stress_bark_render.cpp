@@ -4,6 +4,8 @@
 // the cracks.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <algorithm>
 #include <cmath>
 
@@ -113,6 +115,32 @@ TEST(CrackProfile, NeverDeeperThanAFractionOfTheLocalThickness) {
   // Away from the crack, nothing; half-way across its width, half the depth (V-profile).
   EXPECT_EQ(thick.at(Vec3f(0.02f, 0, 0), up).depth, 0.0f);
   EXPECT_NEAR(thick.at(Vec3f(0.003f, 0, 0), up).depth, 0.005f, 1e-5f);
+}
+
+TEST(CrackProfile, MeshFarLargerThanItsCracksAnswersAtOnce) {
+  // A 100 km sheet with a crack along it: its segment would fill 10^13 grid cells of the crack's
+  // width (and overflow their indices); such segments are visited by every query instead, and
+  // a query box spanning too many cells visits every segment. (This hung: a fuzzed radius.)
+  bark::CrackedMesh c;
+  const double L = 1e5;
+  c.mesh.positions = {{-L, -L, 0}, {L, -L, 0}, {L, L, 0}, {-L, L, 0}, {0.0, -L, 0}, {0.0, L, 0}};
+  c.mesh.triangles = {{0, 4, 5}, {0, 5, 3}, {4, 1, 2}, {4, 2, 5}};
+  c.crack_edges = {{4, 5}};
+  c.crack_width = {0, 0, 0, 0, 1, 1};
+  c.component = {-1, -1, -1, -1, 0, 0};
+  c.displacement.assign(6, Eigen::Vector3f::Zero());
+  CrackLook look;
+  look.noise = 0;
+  const auto start = std::chrono::steady_clock::now();
+  const CrackProfile profile(c, look, 1);
+  const Vec3f up(0, 0, 1);
+  EXPECT_GT(profile.at(Vec3f(0, 1000, 0), up).depth, 0.0f);  // on the crack, far along it
+  EXPECT_EQ(profile.at(Vec3f(0.05f, 1000, 0), up).depth, 0.0f);  // 5 cm beside it
+  EXPECT_TRUE(profile.reaches(Vec3f(-5e4f, 0, 0), Vec3f(5e4f, 0, 0)));      // an edge across it
+  EXPECT_FALSE(profile.reaches(Vec3f(2e4f, -5e4f, 0), Vec3f(2e4f, 5e4f, 0)));  // a long one 20 km beside it
+  EXPECT_FALSE(profile.reaches(Vec3f(1e3f, 0, 0), Vec3f(1e3f, 0.01f, 0)));    // a short one 1 km beside it
+  EXPECT_TRUE(profile.reaches(Vec3f(0.001f, 0, 0), Vec3f(0.002f, 0, 0)));  // a short one on it
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 TEST(CrackProfile, GapWidensByTheVirtualDisplacement) {
