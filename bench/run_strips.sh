@@ -29,13 +29,7 @@ echo "whole small tree (scenes/strips_tree.json, trunk + 3 branches): simulate $
 echo
 echo "strips  steps  fractures  simulate_s  us_per_strip_step"
 for n in 250 500 1000 2000; do
-  python3 - "$n" "$out/scene_$n.json" <<'PY'
-import json, sys
-n, path = int(sys.argv[1]), sys.argv[2]
-s = json.load(open("bench/scenes/strips_trunk_1000x500.json"))
-s["objects"][0]["axis"] = [[0, 0, 0], [0, n * 0.005, 0]]
-json.dump(s, open(path, "w"))
-PY
+  trunk_scene "$n" "$out/scene_$n.json"
   read -r sim dress strips fr _ <<<"$(run "$out/scene_$n.json" 256x256)"
   python3 -c "print(f'{$strips:6d}  500  {$fr:9d}  {$sim:10.3f}  {1e6*$sim/($strips*500):.2f}')"
 done

@@ -16,7 +16,6 @@ struct Loaded {
 
 // Throws UserError when the film would not fit in this machine's memory.
 Loaded load(const cli::Options& o);
-void check_film_fits(const cli::Options& o, int width, int height);
 // An unknown --view is a UserError before any work starts.
 void check_view(const cli::Options& o);
 
