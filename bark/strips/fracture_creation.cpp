@@ -30,19 +30,20 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   right.rest = (1 - f) * e.rest;
   right.stiffness = e.stiffness / (1 - f);
   // Material coordinate (UV0) runs over the original epidermis, E0 long.
-  right.material = e.material + (e.level == 0 ? f * e.rest / epidermis0_[j] : 0.0);
+  ElementCold right_cold = s.cold[i];
+  right_cold.material += e.level == 0 ? f * e.rest / epidermis0_[j] : 0.0;
   frac.kind = ElementKind::Fracture;
   frac.level = e.level;
   frac.rest = 0;
   frac.stiffness = params_.fracture_stiffness_at(0);
-  frac.material = right.material;
   frac.fracture = int32_t(s.fractures.size());
   FractureElement fe;
   fe.birth = step_;
-  fe.uv0 = right.material - std::floor(right.material);
+  fe.uv0 = right_cold.material - std::floor(right_cold.material);
   s.fractures.push_back(fe);
   s.elements[i] = left;
   s.elements.insert(s.elements.begin() + long(i) + 1, {frac, right});
+  s.cold.insert(s.cold.begin() + long(i) + 1, {ElementCold{right_cold.material, 1.0}, right_cold});
   s.x.insert(s.x.begin() + long(i) + 1, {xb, xb});
   s.anchor.insert(s.anchor.begin() + long(i) + 1, {xb, xb});
   const bool eliminated = factors_[j].valid;
@@ -54,7 +55,7 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
     // update_attachment makes).
     s.attach.insert(s.attach.begin() + long(i) + 1, {0.0, 0.0});
     for (size_t node = i; node <= i + 3; ++node)
-      s.attach[node] = attachment_share(s.elements[node == 0 ? s.size() - 1 : node - 1]) + attachment_share(s.elements[node]);
+      s.attach[node] = attachment_share(s, node == 0 ? s.size() - 1 : node - 1) + attachment_share(s, node);
   } else {
     update_attachment(j);
   }
@@ -183,7 +184,7 @@ void StripModel::refracture(size_t j, int step) {
     e.level = uint8_t(std::min(255, e.level + 1));
     e.rest = s.length(i);
     e.stiffness = epidermis_stiffness(j, theta, e.rest, e.level);
-    e.width_factor = width_factor(j, theta);
+    s.cold[i].width_factor = width_factor(j, theta);
     e.threshold = jittered_threshold(j, theta, rng);
     ++hardened_[j];
     changed = true;

@@ -119,7 +119,7 @@ FractureField rasterize_strips(const StripModel& model, int W, int H, const Dept
         if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
         const double L = st.length(i);
         const double frac = L > 0 ? std::clamp(off / L, 0.0, 1.0) : 0.0;
-        const double m = e.kind == ElementKind::Epidermis && e.level == 0 ? e.material + frac * e.rest / E0 : e.material;
+        const double m0 = st.cold[i].material, m = e.kind == ElementKind::Epidermis && e.level == 0 ? m0 + frac * e.rest / E0 : m0;
         out[size_t(x)] = m - std::floor(m);
         lvl[size_t(x)] = float(e.level);
       }

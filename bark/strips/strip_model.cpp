@@ -184,15 +184,16 @@ void StripModel::init_strip(size_t j) {
   const double l = s.circumference / n;
   StreamRng rng(params_.seed, j, ~0ULL);
   s.elements.resize(size_t(n));
+  s.cold.resize(size_t(n));
   s.x.resize(s.cyclic ? size_t(n) : size_t(n) + 1);
   for (int i = 0; i < n; ++i) {
     Element& e = s.elements[size_t(i)];
     const double theta = theta_of(j, (i + 0.5) * l);
     e.rest = l;
     e.stiffness = epidermis_stiffness(j, theta, l, 0);
-    e.width_factor = width_factor(j, theta);
+    s.cold[size_t(i)].width_factor = width_factor(j, theta);
     e.threshold = jittered_threshold(j, theta, rng);
-    e.material = double(i) / n;
+    s.cold[size_t(i)].material = double(i) / n;
     s.x[size_t(i)] = i * l;
   }
   if (!s.cyclic) s.x[size_t(n)] = s.circumference;
@@ -210,16 +211,17 @@ void StripModel::update_attachment(size_t j) {
   s.attach.assign(nodes, 0.0);
   if (params_.attachment <= 0) return;
   for (size_t i = 0; i < n; ++i) {
-    const double a = attachment_share(s.elements[i]);
+    const double a = attachment_share(s, i);
     s.attach[i] += a;
     s.attach[(i + 1) % nodes] += a;
   }
   if (!s.cyclic) s.attach.front() = s.attach.back() = 0;  // fixed ends
 }
 
-double StripModel::attachment_share(const Element& e) const {
+double StripModel::attachment_share(const Strip& s, size_t i) const {
   // Half of an epidermis element's springs (sec. 5.1), held by each of its two nodes.
-  return e.kind == ElementKind::Epidermis ? 0.5 * (params_.attachment / params_.element_length) * e.rest * e.width_factor : 0.0;
+  const Element& e = s.elements[i];
+  return e.kind == ElementKind::Epidermis ? 0.5 * (params_.attachment / params_.element_length) * e.rest * s.cold[i].width_factor : 0.0;
 }
 
 void StripModel::settle() {

@@ -136,7 +136,7 @@ class StripModel {
   // circumference.
   double scale_metric(size_t j, double g);
   void update_attachment(size_t j);
-  double attachment_share(const Element& e) const;
+  double attachment_share(const Strip& s, size_t i) const;  // of element i
   void break_strip(size_t j);
   bool break_element(size_t j, size_t i, double f, int32_t* fe_out);
   double epidermis_stiffness(size_t j, double theta, double rest, uint8_t level) const;
