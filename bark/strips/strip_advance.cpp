@@ -41,7 +41,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   // Each array of the strip is an allocation of its own, last touched a step ago: ask for
   // the first lines of all of them at once (the loop below fetches ahead from there), and
   // for the free-end list pass 3 writes.
-  for (const double* v : std::initializer_list<const double*>{s.x.data(), s.anchor.data(), f.inv.data(), f.cprime.data(), f.u.data()})
+  for (const double* v : std::initializer_list<const double*>{s.x.data(), s.anchor.data(), f.inv.data(), f.u.data()})
     __builtin_prefetch(v);
   for (size_t i = 0; i < std::min<size_t>(n, 4); ++i) __builtin_prefetch(&s.elements[i]);
   __builtin_prefetch(&s.elements[n - 1]);
@@ -68,7 +68,6 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   const double* inv = f.inv.data();
   double prev = t_last, p = 0;
   double a_next = x[0] * g;
-  const double* cp = f.cprime.data();
   const double* u = f.u.data();
   for (size_t i = 0; i + 1 < n; ++i) {
     // The elimination chain leaves the loads time, but not a memory latency's worth: fetch
@@ -79,7 +78,6 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
         __builtin_prefetch(&x[i + kAhead]);
         __builtin_prefetch(&inv[i + kAhead]);
         __builtin_prefetch(&a[i + kAhead], 1);
-        __builtin_prefetch(&cp[i + kAhead]);
         __builtin_prefetch(&u[i + kAhead]);
       }
     }
@@ -98,7 +96,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   r[n - 1] = p = forward_row(t_last - prev, e[n - 2].stiffness, inv[n - 1], p);
 
   // Pass 2: back substitution.
-  for (size_t i = n - 1; i-- > 0;) r[i] = p = back_row(r[i], cp[i], p);
+  for (size_t i = n - 1; i-- > 0;) r[i] = p = back_row(r[i], -e[i].stiffness * inv[i], p);
 
   // Pass 3: positions (the Sherman–Morrison correction of the cyclic system) and the scan: is
   // any epidermis element beyond its threshold, which fracture elements have a free end, and

@@ -43,8 +43,8 @@ void factor_cyclic(const Strip& s, EquilibriumFactor& f) {
   const size_t n = s.size();
   auto k = [&](size_t i) { return s.elements[i].stiffness; };
   f.inv.resize(n);
-  f.cprime.resize(n);
   f.u.assign(n, 0.0);
+  auto cprime = [&](size_t i) { return -k(i) * f.inv[i]; };
   const double alpha = -k(n - 1), beta = alpha;
   const double gamma = -(k(n - 1) + k(0) + s.attach[0]);
   auto diag = [&](size_t j) {
@@ -54,20 +54,16 @@ void factor_cyclic(const Strip& s, EquilibriumFactor& f) {
     return d;
   };
   const size_t first = std::min(f.kept, n - 1);  // row 0 and the last row depend on γ
-  if (first == 0) {
-    f.inv[0] = 1.0 / diag(0);
-    f.cprime[0] = -k(0) * f.inv[0];
-  }
+  if (first == 0) f.inv[0] = 1.0 / diag(0);
   for (size_t i = std::max<size_t>(first, 1); i < n; ++i) {
     const double l = -k(i - 1);  // symmetric: sub-diagonal equals the super-diagonal
-    f.inv[i] = 1.0 / (diag(i) - l * f.cprime[i - 1]);
-    f.cprime[i] = -k(i) * f.inv[i];
+    f.inv[i] = 1.0 / (diag(i) - l * cprime(i - 1));
   }
   f.u[0] = gamma;
   f.u[n - 1] = alpha;
   f.u[0] *= f.inv[0];
   for (size_t i = 1; i < n; ++i) f.u[i] = (f.u[i] - -k(i - 1) * f.u[i - 1]) * f.inv[i];
-  for (size_t i = n - 1; i-- > 0;) f.u[i] -= f.cprime[i] * f.u[i + 1];
+  for (size_t i = n - 1; i-- > 0;) f.u[i] -= cprime(i) * f.u[i + 1];
   f.denominator = 1.0 + f.u[0] + beta * f.u[n - 1] / gamma;
   f.gamma = gamma;
 }
@@ -77,11 +73,9 @@ void factor_open(const Strip& s, EquilibriumFactor& f) {
   const size_t m = s.size() - 1;
   auto k = [&](size_t i) { return s.elements[i].stiffness; };
   f.inv.resize(m);
-  f.cprime.resize(m);
   for (size_t r = std::min(f.kept, m); r < m; ++r) {
     const double d = k(r) + k(r + 1) + s.attach[r + 1];
-    f.inv[r] = 1.0 / (r == 0 ? d : d + k(r) * f.cprime[r - 1]);
-    f.cprime[r] = -k(r + 1) * f.inv[r];
+    f.inv[r] = 1.0 / (r == 0 ? d : d + k(r) * (-k(r) * f.inv[r - 1]));  // c'_{r-1} = -K_r inv_{r-1}
   }
 }
 
@@ -158,9 +152,10 @@ size_t assemble_open(const Strip& s, std::vector<double>& rhs) {
   return m;
 }
 
-// Back substitution from the last row, whose value p is already in r[m - 1].
-PHELLEM_FMA_CLONES void back_substitute(double* r, const double* cp, size_t m, double p) {
-  for (size_t i = m - 1; i-- > 0;) r[i] = p = back_row(r[i], cp[i], p);
+// Back substitution from the last row, whose value p is already in r[m - 1]; row i's
+// super-diagonal entry is -K of e[i] (c'_i = -K inv_i).
+PHELLEM_FMA_CLONES void back_substitute(double* r, const double* inv, const Element* e, size_t m, double p) {
+  for (size_t i = m - 1; i-- > 0;) r[i] = p = back_row(r[i], -e[i].stiffness * inv[i], p);
 }
 
 // Open strips: forward elimination and back substitution on the eliminated matrix (row r's
@@ -169,11 +164,10 @@ PHELLEM_FMA_CLONES void back_substitute(double* r, const double* cp, size_t m, d
 PHELLEM_FMA_CLONES void substitute_open(const Strip& s, const EquilibriumFactor& f, std::vector<double>& rhs, size_t m) {
   double* r = rhs.data();
   const double* inv = f.inv.data();
-  const double* cp = f.cprime.data();
   double p = r[0] * inv[0];
   r[0] = p;
   for (size_t i = 1; i < m; ++i) r[i] = p = forward_row(r[i], s.elements[i].stiffness, inv[i], p);
-  back_substitute(r, cp, m, p);
+  back_substitute(r, inv, s.elements.data() + 1, m, p);  // row r's super-diagonal: element r + 1
 }
 
 // Cyclic strips: the right-hand side (the differences of the anchor tensions) and the forward
@@ -196,7 +190,7 @@ PHELLEM_FMA_CLONES void assemble_and_eliminate_cyclic(const Strip& s, const Equi
   }
   p = forward_row(last - prev, e[n - 2].stiffness, inv[n - 1], p);
   r[n - 1] = p;
-  back_substitute(r, f.cprime.data(), n, p);
+  back_substitute(r, inv, e, n, p);
 }
 
 // Node positions from the solution (cyclic strips: the Sherman–Morrison correction).

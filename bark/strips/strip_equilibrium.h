@@ -14,12 +14,15 @@ namespace phellem::bark {
 // the anchors, i.e. the right-hand side. Whoever changes a stiffness clears `valid`; a solve
 // with a valid factor gives the same bits as one that eliminates again.
 struct EquilibriumFactor {
-  std::vector<double> inv, cprime;  // 1 / pivot and the eliminated super-diagonal
+  // 1 / pivot of each row. The eliminated super-diagonal c'_i = -K_i / pivot_i is not kept: it
+  // is recomputed as -K · inv (the same product the elimination makes, so the same bits), one
+  // array fewer for every step to stream.
+  std::vector<double> inv;
   std::vector<double> u;            // cyclic strips: A'^-1 u of Sherman–Morrison
   double denominator = 0;           // cyclic strips: 1 + vᵀ A'^-1 u
   double gamma = 0;                 // cyclic strips: γ = -A[0][0]
   bool valid = false;
-  // When not valid: rows [0, kept) of inv and cprime still hold (their
+  // When not valid: rows [0, kept) of inv still hold (their
   // elements and attachment did not change, e.g. before a break further along the strip), so
   // elimination resumes there; the Sherman–Morrison vector is redone in full.
   size_t kept = 0;
