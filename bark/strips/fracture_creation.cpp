@@ -158,12 +158,15 @@ void StripModel::assign_new_fracture_ids(size_t j) {
   for (size_t i = 0; i < s.size(); ++i) {
     Element& e = s.elements[i];
     if (e.kind != ElementKind::Fracture) continue;
-    const FractureElement& fe = s.fractures[size_t(e.fracture)];
-    e.id = fe.id;
-    if (fe.birth == step_ && fracture_count_[size_t(fe.id)] == 0) {  // created by this step's breaks
-      fracture_count_[size_t(fe.id)] = 1;
-      fracture_width_[size_t(fe.id)] = s.length(i);
-      born_[j].emplace_back(fe.id, s.length(i));
+    // A break not yet given an id is a new fracture of one element. (Elements that
+    // propagation made carry the id of the fracture they continue and were counted then;
+    // that id need not be a root, so its count entry says nothing.)
+    const bool fresh = e.id < 0;
+    e.id = s.fractures[size_t(e.fracture)].id;
+    if (fresh) {
+      fracture_count_[size_t(e.id)] = 1;
+      fracture_width_[size_t(e.id)] = s.length(i);
+      born_[j].emplace_back(e.id, s.length(i));
     }
   }
 }
