@@ -534,8 +534,9 @@ TEST(StripModel, EveryPresetKeepsTheModelInvariantsOnABentCone) {
           }
         }
       }
-      if (step + 1 < p.steps)  // (the last step also settles: hardening is not counted until the next measure)
+      if (step + 1 < p.steps) {  // (the last step also settles: hardening is not counted until the next measure)
         for (const auto& [root, n] : count) ASSERT_EQ(m.inglis_measure(root).first, n) << name << " fracture " << root << " step " << step;
+      }
     }
     EXPECT_GT(m.stats().propagated, 1000) << name;
     EXPECT_EQ(m.stats().scripted, 1) << name;
