@@ -36,7 +36,7 @@ static_assert(sizeof(Element) == 48, "the per-step passes stream every element: 
 // What an element carries that the per-step passes do not read, kept apart (Strip::cold,
 // index for index) so that the elements they stream through every step take 48 bytes
 // instead of 64: a trunk's strips do not fit in this machine's caches, and each step reads
-// them all (same-run A/B on the benchmark trunk, one thread: 0.964 [0.911, 0.995]).
+// them all (a gain of a few per cent at most on the benchmark trunk; see the README).
 struct ElementCold {
   // Material coordinate of the element's left end on the unfractured epidermis, in [0, 1):
   // where UV0 of a break is read (sec. 3.3 "Texturing", 5.4).
