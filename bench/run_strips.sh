@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Strip-model simulation and dressing time (README figures): the 1000-strip × 500-step trunk
 # of bench/scenes/strips_trunk_1000x500.json (radius 0.15 m, 5 mm strips), the whole small
-# tree of scenes/strips_tree.json, then the scaling table over 250/500/1000/2000 strips.
+# tree of scenes/strips_tree.json, then the scaling table over 250/500/1000/2000 strips; the
+# trunk on one thread against two (how close two threads come to halving the time).
 # Medians of REPEAT runs (default 3).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +23,13 @@ run() {  # scene, field resolution -> "simulate dress strips fractures simulate_
 echo "benchmark scene: 1000 strips x 500 steps, FractureField 4096x4096"
 read -r sim dress strips fr lo hi <<<"$(run bench/scenes/strips_trunk_1000x500.json 4096x4096)"
 echo "  simulate ${sim} s (runs ${lo}-${hi} s), dress ${dress} s (${strips} strips, ${fr} fractures)"
+# The same trunk on one thread and on two, in alternating pairs: how close two threads come
+# to halving the work.
+: >"$out/threads"
+for r in $(seq "$REPEAT"); do
+  echo "$(strip_sim ./build/phellem bench/scenes/strips_trunk_1000x500.json 1 t1) $(strip_sim ./build/phellem bench/scenes/strips_trunk_1000x500.json 2 t2)" >>"$out/threads"
+done
+pair_summary "$out/threads" "  one thread against two, " "1 thread" "2 threads"
 ./build/phellem simulate bench/scenes/strips_trunk_1000x500.json -o "$out/mesh" --quiet --stats "$out/m.json"
 python3 -c "import json;d=json.load(open('$out/m.json'));print('  bark mesh (.glb, once): %.1f s, %d triangles' % (d['time_s']['mesh'], d['mesh_triangles']))"
 read -r sim dress strips fr _ <<<"$(run scenes/strips_tree.json 1024x1024)"
