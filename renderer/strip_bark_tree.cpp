@@ -32,9 +32,12 @@ void TreeStripSimulation::run_to(int step, bool progress) {
   step = std::min(step, steps_total());
   if (steps_done() >= step) return;
   Progress bar(label_, step - steps_done(), progress);
+  // The simulation advances by blocks of steps (bark::kBlockSteps): a frame shows the end of
+  // the block its step falls in.
   while (steps_done() < step) {
+    const int before = steps_done();
     sim_->step();
-    bar.advance();
+    bar.advance(steps_done() - before);
   }
   sim_->settle();  // a growth frame reads this intermediate state
   bar.finish();

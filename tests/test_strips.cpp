@@ -8,6 +8,7 @@
 #include <random>
 
 #include "bark/geometry/generalized_cylinder.h"
+#include "bark/strips/fracture_ends.h"
 #include "bark/strips/fracture_field.h"
 #include "bark/strips/presets.h"
 #include "bark/strips/strip_equilibrium.h"
@@ -511,14 +512,15 @@ TEST(StripModel, EveryPresetKeepsTheModelInvariantsOnABentCone) {
     StripParams p = *strip_preset(name);
     if (name == "plated") p.refracture_width = 0.02;
     p.dilatation.push_back({0.3, 1.0, 0.05, 0.5, 2.0});
-    p.scripted.push_back({0.2, 1.0, 10});
+    p.scripted.push_back({0.2, 1.0, 0});
     const GeneralizedCylinder cone({{0, 0, 0}, {0, 0.6, 0.1}}, {0.12, 0.08});
     StripModel m(oriented_domain(cone, p), p);
     m.set_check_equilibrium(true);
     std::vector<double> before;
     for (const Strip& s : m.strips()) before.push_back(s.original_epidermis());
-    for (int step = 0; step < p.steps; ++step) {
-      m.step();
+    while (m.steps_done() < p.steps) {
+      m.step();  // a block of steps
+      const int step = m.steps_done();
       std::map<int32_t, double> count;
       for (size_t j = 0; j < m.strips().size(); ++j) {
         const Strip& s = m.strips()[j];
@@ -534,7 +536,7 @@ TEST(StripModel, EveryPresetKeepsTheModelInvariantsOnABentCone) {
           }
         }
       }
-      if (step + 1 < p.steps) {  // (the last step also settles: hardening is not counted until the next measure)
+      if (step < p.steps) {  // (the last step also settles: hardening is not counted until the next measure)
         for (const auto& [root, n] : count) ASSERT_EQ(m.inglis_measure(root).first, n) << name << " fracture " << root << " step " << step;
       }
     }
@@ -543,6 +545,23 @@ TEST(StripModel, EveryPresetKeepsTheModelInvariantsOnABentCone) {
     EXPECT_LT(m.max_residual(), 1e-9) << name;
     for (size_t j = 0; j < before.size(); ++j) EXPECT_NEAR(m.strips()[j].original_epidermis(), before[j], 1e-12 * before[j]) << name;
   }
+}
+
+TEST(StripModel, FracturesDoNotStopAlongAHeightOfTheTrunk) {
+  // Halves of the strips swept at once must not leave a horizontal seam: a height where the
+  // fractures of the first wave stop and others start (bench/strip_ends.cpp). A whole sweep
+  // gives at most 9 free ends in any 3 strips of this trunk (~400 strips) for these seeds,
+  // the halves splitting during the first wave 47-54 (fissured) and 22 (plated).
+  const GeneralizedCylinder trunk({{0, -0.05, 0}, {0.02, 1.0, 0.01}, {0.0, 2.0, 0.02}}, {0.3, 0.24, 0.2});
+  for (const std::string name : {"fissured", "plated"})
+    for (uint64_t seed : {1, 2, 3}) {
+      StripParams p = *strip_preset(name);
+      p.seed = seed;
+      StripModel m(oriented_domain(trunk, p), p);
+      while (m.steps_done() < m.steps_total()) m.step();
+      const EndsPeak peak = ends_peak(fracture_ends_per_strip(m));
+      EXPECT_LE(peak.peak, 15) << name << " seed " << seed << ": at strip " << peak.strip << ", median " << peak.median;
+    }
 }
 
 TEST(StripModel, EveryPresetIsBitIdenticalForAnyThreadCount) {

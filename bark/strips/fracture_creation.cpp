@@ -15,7 +15,7 @@ constexpr double kTwoPi = 6.283185307179586;
 constexpr double kMinPiece = 0.05;
 }  // namespace
 
-bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
+bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out, int step) {
   // The fracture element ends up at index i + 1 (callers rely on it).
   // Figure 6: a split element of stiffness K becomes pieces f·l0 and (1 − f)·l0 of stiffness
   // K/f and K/(1 − f) (still K in series); a zero-rest-length fracture element opens between.
@@ -38,7 +38,7 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   frac.stiffness = params_.fracture_stiffness_at(0);
   frac.fracture = int32_t(s.fractures.size());
   FractureElement fe;
-  fe.birth = step_;
+  fe.birth = step;
   fe.uv0 = right_cold.material - std::floor(right_cold.material);
   s.fractures.push_back(fe);
   s.elements[i] = left;
@@ -77,16 +77,16 @@ bool StripModel::break_element(size_t j, size_t i, double f, int32_t* fe_out) {
   return true;
 }
 
-void StripModel::break_strip(size_t j) {
+void StripModel::break_strip(size_t j, int step) {
   Strip& s = strips_[j];
-  StreamRng rng(params_.seed, j, uint64_t(step_));
+  StreamRng rng(params_.seed, j, uint64_t(step));
   // Scripted fractures (the paper's interactive picking) of this step on this strip.
   for (const ScriptedFracture& sf : params_.scripted) {
-    if (sf.step != step_) continue;
+    if (sf.step != step) continue;
     const auto [strip, theta] = strip_coords(sf.s, sf.theta);
-    if (strip == j) scripted_[j] += trigger(j, theta) ? 1 : 0;
+    if (strip == j) scripted_[j] += trigger_at(j, theta, nullptr, step) ? 1 : 0;
   }
-  for (double theta : arrivals_[j]) arrived_[j] += trigger(j, theta) ? 1 : 0;
+  for (double theta : arrivals_[j]) arrived_[j] += trigger_at(j, theta, nullptr, step) ? 1 : 0;
   arrivals_[j].clear();
   if (!over_[j] && scripted_[j] == 0 && arrived_[j] == 0) return;  // nothing exceeded its threshold after growth
   // Figure 8: while an element obeys the criterion L / l0 > S_i, break the most strained one
@@ -127,11 +127,13 @@ void StripModel::break_strip(size_t j) {
         }
       }
     }
-    if (!break_element(j, at, f, nullptr)) break;
+    if (!break_element(j, at, f, nullptr, step)) break;
   }
 }
 
-bool StripModel::trigger(size_t j, double theta, int32_t* fe_out) {
+bool StripModel::trigger(size_t j, double theta, int32_t* fe_out) { return trigger_at(j, theta, fe_out, step_); }
+
+bool StripModel::trigger_at(size_t j, double theta, int32_t* fe_out, int step) {
   Strip& s = strips_[j];
   const double x = x_of(j, theta);
   const size_t i = element_at(j, x);
@@ -139,22 +141,14 @@ bool StripModel::trigger(size_t j, double theta, int32_t* fe_out) {
   double off = x - s.x[i];
   if (s.cyclic) off -= std::floor(off / s.circumference) * s.circumference;
   const double L = s.length(i);
-  return break_element(j, i, L > 0 ? off / L : 0.5, fe_out);
+  return break_element(j, i, L > 0 ? off / L : 0.5, fe_out, step);
 }
 
-void StripModel::assign_new_fracture_ids(size_t j) {
-  // In sweep order: ids do not depend on the thread count.
+void StripModel::assign_new_fracture_ids(size_t j, Sweep& sw) {
+  // In sweep order within the half: ids do not depend on the thread count.
   Strip& s = strips_[j];
   for (FractureElement& fe : s.fractures)
-    if (fe.id < 0) {
-      fe.id = skeleton_.make();
-      const Eigen::Vector3d& w = params_.opening_mix;
-      StreamRng rng(params_.seed ^ 0x6f70656eULL, uint64_t(fe.id), 0);
-      const double u = rng.uniform() * w.sum();
-      modes_.push_back(u < w[0] ? OpeningMode::Axis : u < w[0] + w[1] ? OpeningMode::OneSide : OpeningMode::Both);
-      fracture_count_.push_back(0);
-      fracture_width_.push_back(0);
-    }
+    if (fe.id < 0) fe.id = sw.make_id();
   for (size_t i = 0; i < s.size(); ++i) {
     Element& e = s.elements[i];
     if (e.kind != ElementKind::Fracture) continue;
@@ -164,11 +158,19 @@ void StripModel::assign_new_fracture_ids(size_t j) {
     const bool fresh = e.id < 0;
     e.id = s.fractures[size_t(e.fracture)].id;
     if (fresh) {
-      fracture_count_[size_t(e.id)] = 1;
-      fracture_width_[size_t(e.id)] = s.length(i);
+      sw.count[size_t(e.id)] = 1;
+      sw.width[size_t(e.id)] = s.length(i);
       born_[j].emplace_back(e.id, s.length(i));
     }
   }
+}
+
+OpeningMode StripModel::draw_opening_mode(int32_t id) const {
+  // sec. 3.3: the mix of opening modes, drawn per fracture id.
+  const Eigen::Vector3d& w = params_.opening_mix;
+  StreamRng rng(params_.seed ^ 0x6f70656eULL, uint64_t(id), 0);
+  const double u = rng.uniform() * w.sum();
+  return u < w[0] ? OpeningMode::Axis : u < w[0] + w[1] ? OpeningMode::OneSide : OpeningMode::Both;
 }
 
 void StripModel::refracture(size_t j, int step) {

@@ -34,15 +34,16 @@ void StripModel::measure_fractures() {
   // summed as integers (whatever thread settled a strip, the total is the same), per root,
   // then the births in strip order.
   skeleton_.compress();
-  const size_t ids = skeleton_.ids(), summed = sums_[0].count.size();
+  const size_t ids = skeleton_.ids();
   fracture_count_.assign(ids, 0.0);
   fracture_width_.assign(ids, 0.0);
   root_width_.assign(ids, 0);
-  for (size_t id = 0; id < summed; ++id) {
-    const size_t r = size_t(skeleton_.compressed_root(int32_t(id)));
-    fracture_count_[r] += double(sums_[0].count[id] + sums_[1].count[id]);
-    root_width_[r] += sums_[0].width[id] + sums_[1].width[id];
-  }
+  for (const InglisSums& sums : sums_)
+    for (size_t id = 0; id < sums.count.size(); ++id) {
+      const size_t r = size_t(skeleton_.compressed_root(int32_t(id)));
+      fracture_count_[r] += double(sums.count[id]);
+      root_width_[r] += sums.width[id];
+    }
   for (size_t r = 0; r < ids; ++r) fracture_width_[r] = double(root_width_[r]) * 0x1p-40;
   for (auto& born : born_) {
     for (const auto& [id, w] : born) {
@@ -58,12 +59,24 @@ void StripModel::measure_fractures() {
   }
 }
 
+namespace {
+// Inglis: the stress at a tip grows with the fracture's length-to-width ratio (mean width;
+// sec. 3.2.4: "we used the mean fracture width"). count and width are by root.
+bool inglis_sharp(const FractureSkeleton& skeleton, const std::vector<double>& count, const std::vector<double>& width,
+                  int32_t id, double strip_width, double inglis_threshold) {
+  const size_t root = size_t(skeleton.find(id));
+  if (root >= count.size()) return false;
+  const double c = count[root], mean_width = width[root] / std::max(1.0, c);
+  return c * strip_width > inglis_threshold * mean_width;
+}
+}  // namespace
+
 bool StripModel::sharp(int32_t id) const {
-  // Inglis: the stress at a tip grows with the fracture's length-to-width ratio (mean width).
-  const size_t root = size_t(skeleton_.find(id));
-  if (root >= fracture_count_.size()) return false;
-  const double count = fracture_count_[root], mean_width = fracture_width_[root] / std::max(1.0, count);
-  return count * domain_.strip_width > params_.inglis_threshold * mean_width;
+  return inglis_sharp(skeleton_, fracture_count_, fracture_width_, id, domain_.strip_width, params_.inglis_threshold);
+}
+
+bool StripModel::Sweep::sharp(int32_t id, double strip_width, double inglis_threshold) const {
+  return inglis_sharp(skeleton, count, width, id, strip_width, inglis_threshold);
 }
 
 std::vector<FractureTip> StripModel::sharp_tips(size_t first, size_t last) const {
@@ -160,7 +173,7 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
   side.lands = st.elements[side.element].kind == ElementKind::Fracture || strained(st, side.element);
 }
 
-void StripModel::propagate_from(size_t j) {
+void StripModel::propagate_from(size_t j, Sweep& sw) {
   const size_t n = strips_.size();
   const double jitter = params_.propagation_jitter_deg * kPi / 180.0;
   auto neighbour = [&](bool up) -> long {
@@ -168,7 +181,8 @@ void StripModel::propagate_from(size_t j) {
     return j > 0 ? long(j - 1) : (domain_.wrap_s ? long(n - 1) : -1);
   };
   const long up_strip = neighbour(true), down_strip = neighbour(false);
-  StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(step_));
+  auto sharp = [&](int32_t id) { return sw.sharp(id, domain_.strip_width, params_.inglis_threshold); };
+  StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(sw.step));
   // aim() looks up the elements of this strip that fractures in the neighbours link back to;
   // the record → element table was last touched a step ago: fetch it now, all at once.
   {
@@ -178,7 +192,8 @@ void StripModel::propagate_from(size_t j) {
   // The free sides of the sharp free ends of this strip (listed after growth, plus those made
   // since in the sweep), each with its random draw. Nothing below changes strip j's elements
   // or links (breaks and links go to the neighbours), so the list holds through the loop.
-  std::vector<PropagationSide>& sides = sides_;
+  // Sides aimed at the other half's strips wait for the step's end.
+  std::vector<PropagationSide>& sides = sw.sides;
   sides.clear();
   const bool fresh = !touched_[j];
   for (const FreeEnd& listed : tips_[j]) {
@@ -203,7 +218,10 @@ void StripModel::propagate_from(size_t j) {
       side.jitter = jitter * rng.symmetric();  // drawn for every side: stable streams
       const long t = up ? up_strip : down_strip;
       side.target = t < 0 || size_t(t) == j ? SIZE_MAX : size_t(t);
-      sides.push_back(side);
+      if (side.target != SIZE_MAX && owner_[side.target] != sw.half)
+        sw.crossings.push_back({j, side.target, side.fe, up, side.jitter, sw.step});
+      else
+        sides.push_back(side);
     }
   }
   // Each side's cut on its neighbour, computed for all sides first (independent computations
@@ -217,62 +235,84 @@ void StripModel::propagate_from(size_t j) {
     if (side.target != SIZE_MAX && !(side.up ? changed_up : changed_down) && !side.lands) continue;
     // Tested again: a merge earlier in this loop may have changed the fracture.
     if (!sharp(side.id)) continue;
-    const size_t root = size_t(skeleton_.find(side.id));
     if (side.up ? up_strip < 0 : down_strip < 0) {
-      exits_.push_back({int(j), side.up, side.theta});
+      sw.exits.push_back({int(j), side.up, side.theta});
       continue;
     }
     if (side.target == SIZE_MAX) continue;
-    const size_t ts = side.target;
     if (side.up ? changed_up : changed_down) aim(j, side);
-    if (!side.advances) continue;
-    Strip& st = strips_[ts];
-    const size_t i = side.element;
-    const Element& e = st.elements[i];
-    int32_t g = -1;
-    size_t i_target = i;  // the fracture element linked to: met, or made by the break
-    if (e.kind == ElementKind::Fracture) {
-      // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
-      g = e.fracture;
-      const size_t other = size_t(skeleton_.find(e.id));
-      if (other != root && skeleton_.merge(int32_t(root), int32_t(other))) {
-        ++stats_.merged;
-        const size_t r = size_t(skeleton_.find(int32_t(root))), o = r == root ? other : root;
-        fracture_count_[r] += fracture_count_[o];
-        fracture_width_[r] += fracture_width_[o];
-      }
-    } else {
-      // Inglis' iso-strain curves run parallel to fractures: only bark in tension breaks.
-      if (!strained(st, i)) continue;
-      double off = side.x - st.x[i];
-      if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
-      const double L = st.length(i);
-      const long long before = breaks_[ts];
-      if (!break_element(ts, i, L > 0 ? off / L : 0.5, &g)) continue;
-      breaks_[ts] = before;  // a propagation, not a new fracture
-      FractureElement& ng = st.fractures[size_t(g)];
-      ng.id = side.id;
-      i_target = i + 1;
-      st.elements[i_target].id = side.id;
-      ++stats_.propagated;
-      const size_t r = size_t(skeleton_.find(side.id));
-      fracture_count_[r] += 1;
-      fracture_width_[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
-      born_[ts].emplace_back(side.id, st.length(i + 1));
-    }
-    // Link both ways, in the fracture records and their copies in the elements.
-    FractureElement& src2 = strips_[j].fractures[size_t(side.fe)];
-    Element& src_e = strips_[j].elements[side.tip];
-    FractureElement& ge2 = st.fractures[size_t(g)];
-    Element& ge_e = st.elements[i_target];
-    (side.up ? src2.up : src2.down) = (side.up ? src_e.up : src_e.down) = g;
-    if ((side.up ? ge2.down : ge2.up) < 0) (side.up ? ge2.down : ge2.up) = (side.up ? ge_e.down : ge_e.up) = side.fe;
+    if (!side.advances || !land(j, side, sw)) continue;
     // The target strip changed (a break moves its elements, a link its back links): later
     // sides aimed at it are aimed again. (Both neighbours are one strip when there are two.)
-    touched_[ts] = 1;
-    changed_up |= long(ts) == up_strip;
-    changed_down |= long(ts) == down_strip;
+    changed_up |= long(side.target) == up_strip;
+    changed_down |= long(side.target) == down_strip;
   }
+}
+
+bool StripModel::land(size_t j, PropagationSide& side, Sweep& sw) {
+  const size_t ts = side.target, root = size_t(sw.skeleton.find(side.id));
+  Strip& st = strips_[ts];
+  const size_t i = side.element;
+  const Element& e = st.elements[i];
+  int32_t g = -1;
+  size_t i_target = i;  // the fracture element linked to: met, or made by the break
+  if (e.kind == ElementKind::Fracture) {
+    // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
+    g = e.fracture;
+    const size_t other = size_t(sw.skeleton.find(e.id));
+    if (other != root && sw.skeleton.merge(int32_t(root), int32_t(other))) {
+      sw.merges.emplace_back(int32_t(root), int32_t(other));
+      const size_t r = size_t(sw.skeleton.find(int32_t(root))), o = r == root ? other : root;
+      sw.count[r] += sw.count[o];
+      sw.width[r] += sw.width[o];
+    }
+  } else {
+    // Inglis' iso-strain curves run parallel to fractures: only bark in tension breaks.
+    if (!strained(st, i)) return false;
+    double off = side.x - st.x[i];
+    if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
+    const double L = st.length(i);
+    const long long before = breaks_[ts];
+    if (!break_element(ts, i, L > 0 ? off / L : 0.5, &g, sw.step)) return false;
+    breaks_[ts] = before;  // a propagation, not a new fracture
+    FractureElement& ng = st.fractures[size_t(g)];
+    ng.id = side.id;
+    i_target = i + 1;
+    st.elements[i_target].id = side.id;
+    ++sw.propagated;
+    const size_t r = size_t(sw.skeleton.find(side.id));
+    sw.count[r] += 1;
+    sw.width[r] += st.length(i + 1);  // break_element put the fracture element at i + 1
+    born_[ts].emplace_back(side.id, st.length(i + 1));
+  }
+  // Link both ways, in the fracture records and their copies in the elements.
+  FractureElement& src2 = strips_[j].fractures[size_t(side.fe)];
+  Element& src_e = strips_[j].elements[side.tip];
+  FractureElement& ge2 = st.fractures[size_t(g)];
+  Element& ge_e = st.elements[i_target];
+  (side.up ? src2.up : src2.down) = (side.up ? src_e.up : src_e.down) = g;
+  if ((side.up ? ge2.down : ge2.up) < 0) (side.up ? ge2.down : ge2.up) = (side.up ? ge_e.down : ge_e.up) = side.fe;
+  touched_[ts] = 1;
+  return true;
+}
+
+void StripModel::cross(const Crossing& c, Sweep& sw) {
+  // A side that reached the other half of the sweep, at the step's end: aimed at its target as
+  // it is now, and landed if it still can (its side may have been linked since).
+  const int32_t tip = element_of_[c.strip][size_t(c.fe)];
+  const Element& e = strips_[c.strip].elements[size_t(tip)];
+  if (e.kind != ElementKind::Fracture || (c.up ? e.up : e.down) >= 0) return;
+  PropagationSide side;
+  side.tip = size_t(tip);
+  side.fe = c.fe;
+  side.id = e.id;
+  side.up = c.up;
+  side.theta = centre_theta(c.strip, size_t(tip));
+  side.jitter = c.jitter;
+  side.target = c.target;
+  sw.step = c.step;
+  aim(c.strip, side);
+  if (side.advances && side.lands) land(c.strip, side, sw);
 }
 
 }  // namespace phellem::bark

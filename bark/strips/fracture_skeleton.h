@@ -16,6 +16,11 @@ class FractureSkeleton {
     parent_.push_back(int32_t(parent_.size()));
     return parent_.back();
   }
+  // Makes every id below `ids` that does not exist yet, each a fracture of its own (ids
+  // allocated by a half of a step's sweep come in a fixed pattern; unused ones stay alone).
+  void extend(size_t ids) {
+    while (parent_.size() < ids) parent_.push_back(int32_t(parent_.size()));
+  }
   int32_t find(int32_t id) const {
     while (parent_[size_t(id)] != id) id = parent_[size_t(id)];
     return id;

@@ -18,23 +18,25 @@ namespace {
 constexpr size_t kAhead = 16;  // elements fetched ahead in the first pass
 }  // namespace
 
-void StripModel::advance_strip(size_t j, int grower) {
+void StripModel::advance_strip(size_t j, int grower, int step, bool count_widths) {
+  // By fracture id: roots are found in measure_fractures (the sweep may merge meanwhile).
+  InglisSums& sums = count_widths ? sums_[grower] : unused_sums_[grower];
   if (pending_[j]) {
-    refracture(j, step_ - 1);  // hardening changes elements, and then invalidates the factor
+    refracture(j, step - 1);  // hardening changes elements, and then invalidates the factor
     const Strip& s = strips_[j];
     if (s.cyclic && s.size() >= 3 && factors_[j].valid && domain_.strips[j].exponent.empty() &&
         params_.fracture_stiffness.size() == 1 && !check_) {
-      advance_settled(j, grower);
+      advance_settled(j, sums);
       pending_[j] = 0;
       return;
     }
   }
-  grow_strip(j, grower);  // the previous step's plasticity, if owed, then growth
+  grow_strip(j, sums);  // the previous step's plasticity, if owed, then growth
   solve(j);
   scan_strip(j);
 }
 
-PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
+PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, InglisSums& sums) {
   Strip& s = strips_[j];
   const EquilibriumFactor& f = factors_[j];
   const size_t n = s.size();
@@ -56,7 +58,6 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, int grower) {
   thread_local std::vector<double> rhs;
   rhs.resize(n);
   double* r = rhs.data();
-  InglisSums& sums = sums_[grower];
 
   // Pass 1, plasticity (sec. 5.1): the attachment springs restart at zero length at the grown
   // substrate (a = g x) and new material fills the fractures, whose rest length becomes their

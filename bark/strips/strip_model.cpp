@@ -1,6 +1,7 @@
 #include "bark/strips/strip_model.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -51,6 +52,8 @@ StripModel::StripModel(StripDomain domain, StripParams params) : domain_(std::mo
   element_of_.resize(n);
   born_.resize(n);
   factors_.resize(n);
+  strip_totals_.resize(n);
+  owner_.assign(n, 0);
   tbb::parallel_for(size_t(0), n, [&](size_t j) { init_strip(j); });
   // sec. 3.2.3: check S against the softest element actually built (strips narrower than
   // nominal on the concave side of bent limbs are softer).
@@ -231,7 +234,7 @@ void StripModel::settle() {
   for (size_t j = 0; j < strips_.size(); ++j) {
     if (!pending_[j]) continue;
     refracture(j, step_ - 1);
-    plasticity(j, 0);
+    plasticity(j, sums_[0]);
     pending_[j] = 0;
   }
   for (long long& h : hardened_) {
@@ -252,7 +255,7 @@ double StripModel::scale_metric(size_t j, double g) {
   return s.circumference;
 }
 
-void StripModel::grow_strip(size_t j, int grower) {
+void StripModel::grow_strip(size_t j, InglisSums& sums) {
   // The substrate grows from step t to t + 1 (shrinking strategy seen forwards, sec. 5.2): each
   // anchor keeps its substrate point θ. Stiffnesses and attachment are unchanged: plasticity
   // already gave the fracture elements K_f of their rest length.
@@ -262,12 +265,12 @@ void StripModel::grow_strip(size_t j, int grower) {
   if (m.exponent.empty()) {
     const double g = params_.growth_rate;
     if (pending_[j])
-      plasticity(j, grower, g);  // in the old metric; the new anchors come out grown
+      plasticity(j, sums, g);  // in the old metric; the new anchors come out grown
     else
       for (double& a : s.anchor) a *= g;
     scale_metric(j, g);
   } else {
-    if (pending_[j]) plasticity(j, grower);
+    if (pending_[j]) plasticity(j, sums);
     std::vector<double> theta(s.anchor.size());
     for (size_t i = 0; i < theta.size(); ++i) theta[i] = theta_of(j, s.anchor[i]);
     const double lg = std::log(params_.growth_rate);
@@ -310,7 +313,7 @@ void StripModel::scan_strip(size_t j) {
   over_[j] = over;
 }
 
-void StripModel::plasticity(size_t j, int grower, double growth) {
+void StripModel::plasticity(size_t j, InglisSums& sums, double growth) {
   // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
   // material fills the fractures, whose rest length becomes their current width.
   // Also adds each fracture element's width to the grower's Inglis sums by fracture id.
@@ -318,7 +321,6 @@ void StripModel::plasticity(size_t j, int grower, double growth) {
   Strip& s = strips_[j];
   const size_t n = s.size();
   s.anchor.resize(s.x.size());
-  InglisSums& sums = sums_[grower];  // by fracture id: roots are found in measure_fractures (the sweep may merge meanwhile)
   const bool constant_kf = params_.fracture_stiffness.size() == 1;
   bool refactor = false;
   const double* x = s.x.data();
@@ -350,23 +352,116 @@ void StripModel::step() {
   if (step_ >= params_.steps) return;
   const size_t n = strips_.size();
   exits_.clear();
-  // Figure 8 as a wavefront in sweep order: a strip is grown (after the previous step's
-  // hardening and plasticity, owed since) and solved before the sweep reaches its neighbour,
-  // then broken and propagated from in its turn, so each strip is visited while its data is in
-  // cache. The sweep alternates direction every step. Growing a strip touches nothing but that
-  // strip, so a helper task grows strips ahead of the sweep while this thread sweeps; whoever
-  // claims a strip first grows it, so the result does not depend on the thread count (with
-  // one thread, the sweep grows every strip itself).
-  const bool upward = step_ % 2 == 0;
+  int steps = 1;
+  if (domain_.wrap_s && n > 1) {
+    sweep_step();
+  } else {
+    // Blocks start at multiples of kBlockSteps, whoever calls: the same blocks for a still and
+    // for a growth sequence that stops between them.
+    steps = std::min(kBlockSteps - step_ % kBlockSteps, params_.steps - step_);
+    sweep_block(steps);
+  }
+  // Hardening and plasticity of the last step are applied to each strip when the next step
+  // grows it (its data is then in cache), or by settle().
+  std::fill(pending_.begin(), pending_.end(), char(1));
+  measure_fractures();
+  for (size_t j = 0; j < n; ++j) fold_counts(j);
+  for (StripStats& t : strip_totals_) {
+    stats_.created += t.created;
+    stats_.scripted += t.scripted;
+    stats_.arrived += t.arrived;
+    stats_.refractured += t.refractured;
+    stats_.max_breaks_per_strip_step = std::max(stats_.max_breaks_per_strip_step, t.max_breaks_per_strip_step);
+    stats_.capped += t.capped;
+    t = StripStats{};
+  }
+  step_ += steps;
+  if (step_ == params_.steps) settle();
+}
+
+void StripModel::fold_counts(size_t j) {
+  // One strip's counts of the step just ended on it, into its totals (each strip's are touched
+  // by one thread at a time).
+  StripStats& t = strip_totals_[j];
+  t.created += breaks_[j];
+  t.scripted += scripted_[j];
+  t.arrived += arrived_[j];
+  t.refractured += hardened_[j];
+  t.max_breaks_per_strip_step = std::max(t.max_breaks_per_strip_step, breaks_[j]);
+  t.capped += capped_[j];
+  breaks_[j] = scripted_[j] = hardened_[j] = capped_[j] = arrived_[j] = 0;
+}
+
+void StripModel::start_sweep(Sweep& sw, int half, int halves) {
+  sw.half = half;
+  sw.skeleton = skeleton_;
+  sw.count = fracture_count_;
+  sw.width = fracture_width_;
+  sw.count.resize(skeleton_.ids(), 0.0);
+  sw.width.resize(skeleton_.ids(), 0.0);
+  sw.base = int32_t(skeleton_.ids());
+  sw.stride = halves;
+  sw.made = 0;
+  sw.merges.clear();
+  sw.crossings.clear();
+  sw.exits.clear();
+  sw.propagated = 0;
+}
+
+void StripModel::join_sweeps(int halves) {
+  // The halves' new fracture ids interleave (base + k·halves + half): make them all, unused
+  // ones included, then every merge either half made (the components do not depend on the
+  // order; the older id stays the root), then the crossings in order.
+  int32_t made = 0;
+  for (int h = 0; h < halves; ++h) made = std::max(made, sweeps_[h].made);
+  skeleton_.extend(size_t(sweeps_[0].base) + size_t(made) * size_t(halves));
+  for (size_t id = modes_.size(); id < skeleton_.ids(); ++id) modes_.push_back(draw_opening_mode(int32_t(id)));
+  for (int h = 0; h < halves; ++h) {
+    const Sweep& sw = sweeps_[h];
+    for (const auto& [a, b] : sw.merges) stats_.merged += skeleton_.merge(a, b) ? 1 : 0;
+    stats_.propagated += sw.propagated;
+    exits_.insert(exits_.end(), sw.exits.begin(), sw.exits.end());
+  }
+  if (halves < 2) return;
+  // The replay works on the joined skeleton itself; its Inglis measure is not consulted (a
+  // crossing was sharp when its half listed it) and measure_fractures() redoes it after.
+  Sweep& r = replay_;
+  std::swap(r.skeleton, skeleton_);
+  r.count.assign(r.skeleton.ids(), 0.0);
+  r.width.assign(r.skeleton.ids(), 0.0);
+  r.merges.clear();
+  r.propagated = 0;
+  for (int h = 0; h < halves; ++h)
+    for (const Crossing& c : sweeps_[h].crossings) cross(c, r);
+  std::swap(r.skeleton, skeleton_);
+  stats_.merged += long(r.merges.size());
+  stats_.propagated += r.propagated;
+}
+
+void StripModel::sweep_step() {
+  // One step, the sweep alternating direction every step: for strips that wrap around (a
+  // tileable sample, strips along the axis around a limb), where a block's wavefront would
+  // meet itself. A strip is grown (after the previous step's hardening and plasticity, owed
+  // since) and solved before the sweep reaches its neighbour, then broken and propagated from
+  // in its turn. Growing a strip touches nothing but that strip, so a helper task grows
+  // strips ahead of the sweep while this thread sweeps; whoever claims a strip first grows
+  // it, so the result does not depend on the thread count (with one thread, the sweep grows
+  // every strip itself).
+  const size_t n = strips_.size();
+  const int step = step_;
+  const bool upward = step % 2 == 0;
   const bool wrap = domain_.wrap_s && n > 1;
   auto strip_at = [&](size_t k) { return upward ? k : n - 1 - k; };
+  std::fill(owner_.begin(), owner_.end(), char(0));
+  Sweep& sw = sweeps_[0];
+  start_sweep(sw, 0, 1);
+  sw.step = step;
   const auto claimed = std::make_unique<std::atomic<char>[]>(n), grown = std::make_unique<std::atomic<char>[]>(n);
   // The flags are read before they are claimed: a read-modify-write takes the cache line from
   // the other core even when the strip is already taken.
   auto try_grow = [&](size_t k, int grower) {
     if (claimed[k].load(std::memory_order_relaxed) || claimed[k].exchange(1, std::memory_order_acq_rel)) return false;
-    const size_t j = strip_at(k);
-    advance_strip(j, grower);
+    advance_strip(strip_at(k), grower, step, true);
     grown[k].store(1, std::memory_order_release);
     return true;
   };
@@ -393,27 +488,109 @@ void StripModel::step() {
       prefetch_positions(strip_at(k + 1));
     }
     const size_t j = strip_at(k);
-    break_strip(j);
-    if (breaks_[j] > 0) assign_new_fracture_ids(j);
-    propagate_from(j);
+    break_strip(j, step);
+    if (breaks_[j] > 0) assign_new_fracture_ids(j, sw);
+    propagate_from(j, sw);
   }
   stop.store(true, std::memory_order_relaxed);
   helper.wait();
-  // Hardening and plasticity of this step are applied to each strip when the next step grows
-  // it (its data is then in cache), or by settle().
-  std::fill(pending_.begin(), pending_.end(), char(1));
-  measure_fractures();
-  for (size_t j = 0; j < n; ++j) {
-    stats_.created += breaks_[j];
-    stats_.scripted += scripted_[j];
-    stats_.arrived += arrived_[j];
-    stats_.refractured += hardened_[j];
-    stats_.max_breaks_per_strip_step = std::max(stats_.max_breaks_per_strip_step, breaks_[j]);
-    stats_.capped += capped_[j];
-    breaks_[j] = scripted_[j] = hardened_[j] = capped_[j] = arrived_[j] = 0;
+  join_sweeps(1);
+}
+
+void StripModel::sweep_half(int half, size_t first, size_t count, int K) {
+  // K steps of one half's strips (sweep positions [first, first + count), wrapping) as one
+  // wavefront on this thread: step s reaches the half's strip q right after step s - 1 has
+  // passed strip q + 2 (strip q is final for step s - 1 once step s - 1 has propagated from
+  // q + 1, and step s then grows it, and q + 1, before propagating from q). A strip's K steps
+  // are thus done while its data is still in this core's cache, instead of once per pass over
+  // the whole trunk.
+  constexpr long kLag = 2;
+  Sweep& sw = sweeps_[half];
+  const size_t n = strips_.size();
+  const int base = step_;
+  const bool upward = (base / kBlockSteps) % 2 == 0;
+  auto strip_at = [&](long q) {
+    const size_t p = (first + size_t(q)) % n;
+    return upward ? p : n - 1 - p;
+  };
+  std::vector<int>& grown = grown_step_[half];
+  grown.assign(count, base - 1);
+  auto grow = [&](long q, int s) {
+    if (grown[size_t(q)] >= base + s) return;
+    const size_t j = strip_at(q);
+    if (s > 0) {
+      fold_counts(j);
+      pending_[j] = 1;  // step s - 1's hardening and plasticity
+    }
+    // The Inglis sums are those of the block's last step (the widths measured at its end).
+    const bool last = s == K - 1;
+    if (last) born_[j].clear();  // births of earlier steps are in those sums now
+    advance_strip(j, half, base + s, last);
+    grown[size_t(q)] = base + s;
+  };
+  for (long w = 0; w < long(count) + kLag * (K - 1); ++w)
+    for (int s = 0; s < K; ++s) {
+      const long q = w - kLag * s;
+      if (q < 0 || q >= long(count)) continue;
+      grow(q, s);
+      if (q + 1 < long(count)) grow(q + 1, s);
+      const size_t j = strip_at(q);
+      sw.step = base + s;
+      break_strip(j, sw.step);
+      if (breaks_[j] > 0) assign_new_fracture_ids(j, sw);
+      propagate_from(j, sw);
+    }
+}
+
+void StripModel::sweep_block(int K) {
+  // K steps (Figure 8 each), every step sweeping in the same direction (the direction
+  // alternates from block to block), split in two halves of consecutive strips, one per core:
+  // each half sweeps its strips as a wavefront over the K steps with its own view of the
+  // fracture bookkeeping (the block's start plus its own merges and new fractures), so the
+  // halves share nothing while they run. A fracture reaching the other half waits for the
+  // block's end, when the crossings are replayed in a fixed order; the boundary is drawn anew
+  // for every block (from the seed), so no height of the trunk is special. Running the halves
+  // one after the other gives the same bits. A model of few strips is swept whole.
+  //
+  // So is a block that starts while more than 1 strip in 20 is intact. Bark that has not
+  // fractured yet is strained alike everywhere and breaks everywhere within a few steps (the
+  // first wave: half of all fractures of the benchmark trunk appear in its first 20 steps). A
+  // sweep lets the first fractures run along the axis and relieve the strips ahead of them;
+  // with a boundary between halves, both sides would break on their own near it and the
+  // fractures would stop there, a horizontal seam of fracture ends across the trunk
+  // (bench/strip_ends.cpp counts them: 47-54 ends in 3 strips on the fissured trunk, against
+  // 5-9 for a whole sweep). Once every strip holds fractures, breaks are rare and scattered
+  // and the halves meet no such wave.
+  constexpr size_t kSplitStrips = 16;
+  const size_t n = strips_.size();
+  size_t intact = 0;
+  for (const Strip& st : strips_) intact += st.fractures.empty();
+  const int halves = n >= kSplitStrips && intact * 20 < n ? 2 : 1;
+  const size_t first =
+      halves == 2 ? size_t(StreamRng(params_.seed ^ 0x73706c6974ULL, 0, uint64_t(step_ / kBlockSteps)).uniform() * double(n)) % n : 0;
+  const size_t count0 = halves == 2 ? n / 2 : n;
+  const bool upward = (step_ / kBlockSteps) % 2 == 0;
+  for (size_t q = 0; q < n; ++q) {
+    const size_t p = (first + q) % n;
+    owner_[upward ? p : n - 1 - p] = q < count0 ? 0 : 1;
   }
-  ++step_;
-  if (step_ == params_.steps) settle();
+  for (int h = 0; h < halves; ++h) start_sweep(sweeps_[h], h, halves);
+  // The widths counted for the block's measure are those of its last step's growth: drop what
+  // settle() summed since the last measure (the next measure would count those elements twice).
+  if (K > 1)
+    for (InglisSums& t : sums_) {
+      std::fill(t.width.begin(), t.width.end(), 0);
+      std::fill(t.count.begin(), t.count.end(), 0);
+    }
+  if (halves == 2)
+    tbb::parallel_invoke([&] { sweep_half(0, first, count0, K); }, [&] { sweep_half(1, first + count0, n - count0, K); });
+  else
+    sweep_half(0, first, count0, K);
+  join_sweeps(halves);
+  for (InglisSums& t : unused_sums_) {
+    std::fill(t.width.begin(), t.width.end(), 0);
+    std::fill(t.count.begin(), t.count.end(), 0);
+  }
 }
 
 }  // namespace phellem::bark

@@ -6,13 +6,25 @@
 // follow the substrate), brings it to equilibrium, breaks it while an element exceeds its
 // threshold and propagates its fractures into the neighbours before they are visited, so a
 // young sharp fracture can run along the axis within one step (brittle fracture is fast next
-// to growth) and relieve the strips it crosses. The sweep alternates direction every step so
-// that neither end is favoured. Wide fractures then harden into bark, and plasticity resets
-// the attachment springs and the fracture rest lengths; nothing touches a strip between its
-// neighbours' propagation and the next step's growth, so this last stage is done as the next
-// step grows the strip (settle() does it at once). A helper task grows and solves strips
-// ahead of the sweep, and the sweep grows strips itself while it would wait. Random draws
-// depend on (seed, strip, step) only: the result is bit-identical for any thread count.
+// to growth) and relieve the strips it crosses. Wide fractures then harden into bark, and
+// plasticity resets the attachment springs and the fracture rest lengths; nothing touches a
+// strip between its neighbours' propagation and the next step's growth, so this last stage
+// is done as the next step grows the strip (settle() does it at once).
+//
+// Steps are swept in blocks of kBlockSteps, all in one direction, the direction alternating
+// from block to block so that neither end is favoured. A block is split into two halves of
+// consecutive strips, one per core, and each half runs its K steps as a wavefront (step s
+// reaches a strip right after step s - 1 has passed the strip two further on), so a strip's
+// steps are done while its data is in that core's cache: a trunk's strips do not fit in the
+// caches, and a sweep of one step at a time over all of them ran at memory speed. Each half
+// sees the fracture bookkeeping (skeleton, Inglis measures) as the block began plus its own
+// changes; a fracture that reaches the other half is continued at the block's end, when the
+// crossings are replayed in a fixed order, and the boundary between the halves is drawn anew
+// for every block, so no height of the trunk is special. Strips that wrap around (tileable
+// samples, strips along a limb's axis) are swept one step at a time, alternating direction,
+// with a helper task growing strips ahead of the sweep. Random draws depend on (seed, strip,
+// step) only and the halves share nothing while they run: the result is bit-identical for
+// any thread count.
 #pragma once
 
 #include <cassert>
@@ -59,17 +71,24 @@ struct PropagationExit {
 // benchmark trunk (peak RSS 170 MB for its 1000 strips, 155 MB for 500; 9.4·10^4 elements).
 inline constexpr double kMaxElements = 2e7;
 
+// Steps swept together as one wavefront (StripModel::step() advances by a block; blocks start
+// at multiples of this). Every strip's data is visited once per block instead of once per
+// step, which is what keeps a trunk's strips in cache.
+inline constexpr int kBlockSteps = 8;
+
 class StripModel {
  public:
   // Throws StripParamError when a parameter is outside its valid range, or when the strips
   // would hold more than kMaxElements elements.
   StripModel(StripDomain domain, StripParams params);
 
-  // One growth step (Figure 8 for every strip, then propagation). The step's last stage,
-  // hardening and plasticity (refracture, attachment reset, fracture rest lengths), is applied
-  // to each strip when the next step grows it, while its data is in cache; settle() applies
-  // it now (done automatically after the last step; growth frames call it). Positions and
-  // the skeleton are those of the step either way; settling changes no later result.
+  // One block of growth steps (kBlockSteps, the last block shorter; one step for strips that
+  // wrap around): Figure 8 for every strip, then propagation; steps_done() tells where it
+  // stands. The last step's last stage, hardening and plasticity (refracture, attachment
+  // reset, fracture rest lengths), is applied to each strip when the next step grows it, while
+  // its data is in cache; settle() applies it now (done automatically after the last step;
+  // growth frames call it). Positions and the skeleton are those of the step either way;
+  // settling changes no later result.
   void step();
   void settle();
   int steps_done() const { return step_; }
@@ -129,24 +148,34 @@ class StripModel {
   // One strip's share of a step before the sweep reaches it: the previous step's hardening
   // and plasticity if owed, growth, equilibrium and the scan (strip_advance.cpp).
   // `grower`: 0 for the sweep's thread, 1 for the helper (whose Inglis sums it adds to).
-  void advance_strip(size_t j, int grower);
-  void advance_settled(size_t j, int grower);
-  void grow_strip(size_t j, int grower);
+  // `step`: the step it grows for; `count_widths`: whether its fracture widths go to the
+  // grower's Inglis sums (the last step before a measure) or are dropped.
+  void advance_strip(size_t j, int grower, int step, bool count_widths);
+  struct InglisSums;
+  void advance_settled(size_t j, InglisSums& sums);
+  void grow_strip(size_t j, InglisSums& sums);
+  // A step of the sweep alternating direction every step (strips that wrap around), and a block
+  // of K steps swept as a wavefront (all other strips); see strip_model.cpp.
+  void sweep_step();
+  void sweep_block(int K);
+  void fold_counts(size_t j);
   // Homogeneous growth of strip j's substrate metric and circumference by g; returns the new
   // circumference.
   double scale_metric(size_t j, double g);
   void update_attachment(size_t j);
   double attachment_share(const Strip& s, size_t i) const;  // of element i
-  void break_strip(size_t j);
-  bool break_element(size_t j, size_t i, double f, int32_t* fe_out);
+  void break_strip(size_t j, int step);
+  bool break_element(size_t j, size_t i, double f, int32_t* fe_out, int step);
+  bool trigger_at(size_t j, double theta, int32_t* fe_out, int step);
   double epidermis_stiffness(size_t j, double theta, double rest, uint8_t level) const;
   double jittered_threshold(size_t j, double theta, StreamRng& rng) const;
-  void assign_new_fracture_ids(size_t j);
+  struct Sweep;
+  void assign_new_fracture_ids(size_t j, Sweep& sw);
   void measure_fractures();
-  void propagate_from(size_t j);
+  void propagate_from(size_t j, Sweep& sw);
   double centre_theta(size_t j, size_t element) const;
   void refracture(size_t j, int step);
-  void plasticity(size_t j, int grower, double growth = 1.0);
+  void plasticity(size_t j, InglisSums& sums, double growth = 1.0);
   double width_factor(size_t j, double theta) const;
 
   StripDomain domain_;
@@ -175,13 +204,23 @@ class StripModel {
   struct InglisSums {
     std::vector<int64_t> width;
     std::vector<int32_t> count;
+    // Makes room up to `id`: a fracture made since the last measure (out of line: add() is
+    // inlined in the growth pass).
+    [[gnu::noinline]] void cover(int32_t id) {
+      width.resize(size_t(id) + 1, 0);
+      count.resize(size_t(id) + 1, 0);
+    }
     void add(int32_t id, double w) {
-      assert(id >= 0 && size_t(id) < width.size());
+      assert(id >= 0);
+      if (size_t(id) >= width.size()) [[unlikely]]
+        cover(id);
       width[size_t(id)] += int64_t(w * 0x1p40 + 0.5);  // w >= 0
       count[size_t(id)] += 1;
     }
   };
   InglisSums sums_[2];
+  InglisSums unused_sums_[2];  // per grower: the widths of a block's earlier steps (dropped)
+  std::vector<StripStats> strip_totals_;  // per strip: its counts since the last step() returned
   std::vector<int64_t> root_width_;  // measure_fractures(): scratch
   int step_ = 0;
   bool check_ = false;
@@ -209,7 +248,7 @@ class StripModel {
   // Per strip, for the Inglis ratios: (fracture id, width) of the fracture elements born since
   // the last measure, at birth (those settled since are in sums_). measure_fractures() sums them.
   std::vector<std::vector<std::pair<int32_t, double>>> born_;
-  bool sharp(int32_t id) const;
+  bool sharp(int32_t id) const;  // as the last measure left it (sharp_tips)
   // One free side of a fracture end about to propagate (sec. 3.2.4), and where it would cut
   // its neighbour strip (aim()).
   struct PropagationSide {
@@ -233,7 +272,50 @@ class StripModel {
   // else +∞.
   double influence_distance(const Strip& s, size_t i, double x) const;
   void aim(size_t j, PropagationSide& side) const;
-  std::vector<PropagationSide> sides_;  // the sweep's scratch list in propagate_from
+  // A side of a free end aimed at a strip of the other half of the sweep: replayed at the
+  // block's end (cross()).
+  struct Crossing {
+    size_t strip = 0, target = 0;
+    int32_t fe = -1;  // its fracture record (element indices may shift before the replay)
+    bool up = true;
+    double jitter = 0;
+    int step = 0;
+  };
+  // One half of a block's sweep: what it changes of the fracture bookkeeping, kept apart from
+  // the other half's until the block's end.
+  struct Sweep {
+    int half = 0;
+    int step = 0;                       // the step being swept (draws, births, scripted fractures)
+    FractureSkeleton skeleton;          // the block's start + this half's merges and new ids
+    std::vector<double> count, width;   // Inglis measure by root, as this half sees it
+    int32_t made = 0;                   // new fracture ids made: base + made·stride + half
+    int32_t base = 0, stride = 1;
+    std::vector<std::pair<int32_t, int32_t>> merges;  // replayed on skeleton_ at the block's end
+    std::vector<Crossing> crossings;
+    std::vector<PropagationExit> exits;
+    std::vector<PropagationSide> sides;  // propagate_from's scratch list
+    long long propagated = 0;
+    int32_t make_id() {
+      const int32_t id = base + made++ * stride + half;
+      skeleton.extend(size_t(id) + 1);
+      count.resize(size_t(id) + 1, 0.0);
+      width.resize(size_t(id) + 1, 0.0);
+      return id;
+    }
+    bool sharp(int32_t id, double strip_width, double inglis_threshold) const;
+  };
+  Sweep sweeps_[2];
+  Sweep replay_;             // the block's end: crossings replayed on the joined skeleton
+  std::vector<char> owner_;  // per strip: the half sweeping it in this block
+  std::vector<int> grown_step_[2];  // per half, per strip of its run: the last step grown for
+  void start_sweep(Sweep& sw, int half, int halves);
+  void join_sweeps(int halves);
+  void sweep_half(int half, size_t first, size_t count, int K);
+  // Aims a prepared side and, if it lands, breaks or merges into its target and links both
+  // ways (sec. 3.2.4); true when the target strip changed.
+  bool land(size_t j, PropagationSide& side, Sweep& sw);
+  void cross(const Crossing& c, Sweep& sw);
+  OpeningMode draw_opening_mode(int32_t id) const;
   void scan_strip(size_t j);
   void prefetch_positions(size_t j) const;
   void solve(size_t j);
