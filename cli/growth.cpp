@@ -43,7 +43,7 @@ int run_growth(const cli::Options& o) {
       sim->run_to(step, !o.quiet);
       // The simulation lives on the final shape (shrinking strategy); the frame shows the tree
       // at the girth of this step.
-      const float k = float(sim->girth_scale());
+      const float k = float(sim->girth_scale(step));
       TreeDesc& tree = frame_desc.objects[oi].tree;
       for (float& r : tree.radius) r *= k;
       scale_radii(tree.branches, k);

@@ -4,6 +4,7 @@
 // scene (displacement and shading) and by `phellem growth` (frames along the simulation).
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,17 +26,22 @@ class TreeStripSimulation {
   // /objects/<index>/bark/<key>. `seed` overrides the scene's.
   TreeStripSimulation(const ObjectDesc& tree, size_t object_index, std::optional<uint32_t> seed = {});
 
-  // Grows until `step` (clamped to the total), showing progress when asked.
+  // Grows until `step` (clamped to the total), showing progress when asked. The models advance
+  // by blocks of bark::kBlockSteps, so the bark then shows the end of the block `step` falls
+  // in (steps_done() >= step).
   void run_to(int step, bool progress);
   void run(bool progress) { run_to(steps_total(), progress); }
   int steps_done() const { return sim_->model(0).steps_done(); }
   int steps_total() const { return sim_->model(0).steps_total(); }
-  // Girth of the current step relative to the final shape (≤ 1): frames of a growth time-lapse
-  // draw the tree at this scale. Horizontal fractures come from axial growth: the limbs keep
-  // their girth (and, in growth frames, their final length: the stretch shows in the bark only).
-  double girth_scale() const {
+  // Girth at `step` relative to the final shape (≤ 1): frame k of a growth time-lapse draws the
+  // tree at the scale of its own step, so the trunk thickens smoothly however many frames there
+  // are, with the bark of the block its step falls in (fracture widths within 8 steps, 1 % of
+  // girth at the presets' growth rate, of the frame's own). Horizontal fractures come from
+  // axial growth: the limbs keep their girth (and, in growth frames, their final length: the
+  // stretch shows in the bark only).
+  double girth_scale(int step) const {
     const bark::StripModel& m = sim_->model(0);
-    return m.domain().along_axis ? 1.0 : m.scale_at_step(steps_done());
+    return m.domain().along_axis ? 1.0 : m.scale_at_step(std::clamp(step, 0, steps_total()));
   }
 
   size_t parts() const { return parts_.size(); }

@@ -554,13 +554,13 @@ void StripModel::sweep_block(int K) {
   //
   // So is a block that starts while more than 1 strip in 20 is intact. Bark that has not
   // fractured yet is strained alike everywhere and breaks everywhere within a few steps (the
-  // first wave: half of all fractures of the benchmark trunk appear in its first 20 steps). A
-  // sweep lets the first fractures run along the axis and relieve the strips ahead of them;
-  // with a boundary between halves, both sides would break on their own near it and the
-  // fractures would stop there, a horizontal seam of fracture ends across the trunk
-  // (bench/strip_ends.cpp counts them: 47-54 ends in 3 strips on the fissured trunk, against
-  // 5-9 for a whole sweep). Once every strip holds fractures, breaks are rare and scattered
-  // and the halves meet no such wave.
+  // first wave: on the trunk of scenes/strips_fissured.json, half of the furrowed preset's
+  // fractures appear in its first 20 steps). A sweep lets the first fractures run along the
+  // axis and relieve the strips ahead of them; with a boundary between halves, both sides
+  // would break on their own near it and the fractures would stop there, a horizontal seam of
+  // fracture ends across the trunk (bench/strip_ends.cpp counts them: 47-54 ends in 3 strips
+  // on the fissured trunk, against 5-9 for a whole sweep). Once every strip holds fractures,
+  // breaks are rare and scattered and the halves meet no such wave.
   constexpr size_t kSplitStrips = 16;
   const size_t n = strips_.size();
   size_t intact = 0;

@@ -20,7 +20,10 @@
 // sees the fracture bookkeeping (skeleton, Inglis measures) as the block began plus its own
 // changes; a fracture that reaches the other half is continued at the block's end, when the
 // crossings are replayed in a fixed order, and the boundary between the halves is drawn anew
-// for every block, so no height of the trunk is special. Strips that wrap around (tileable
+// for every block, so no height of the trunk is special. While bark is still intact (more
+// than 1 strip in 20 without a fracture) a block is swept whole instead: the first wave of
+// fractures, which breaks unfractured bark everywhere within a few steps, would otherwise
+// leave a seam of fracture ends at the boundary. Strips that wrap around (tileable
 // samples, strips along a limb's axis) are swept one step at a time, alternating direction,
 // with a helper task growing strips ahead of the sweep. Random draws depend on (seed, strip,
 // step) only and the halves share nothing while they run: the result is bit-identical for

@@ -35,12 +35,13 @@ class TreeStripBark {
   // Throws StripParamError (from any cylinder's model) when a parameter is out of range.
   TreeStripBark(std::vector<TreeCylinder> cylinders, const StripParams& params);
 
-  // One growth step of every cylinder, then the junction transfers.
+  // One block of growth steps of every cylinder (StripModel::step(); every cylinder of a
+  // tree has the same bark, so they advance alike), then the junction transfers.
   void step();
   // Applies every model's pending hardening and plasticity (StripModel::settle): call before
   // reading an intermediate state.
   void settle();
-  // All remaining steps; `progress` is called after each step with (done, total).
+  // All remaining steps; `progress` is called after each block with (done, total).
   void run(const std::function<void(int, int)>& progress = {});
 
   const std::vector<TreeCylinder>& cylinders() const { return cylinders_; }
