@@ -505,9 +505,10 @@ TEST(StripModel, InglisCountsStayExactOnMatureBark) {
 
 TEST(StripModel, EveryPresetKeepsTheModelInvariantsOnABentCone) {
   // Every preset (refracture on for `plated`) on a bent, tapering limb with a bulge and a
-  // scripted fracture (inside a block), checked after every block of steps: each fracture element's copies of its record
-  // agree with it, epidermis elements have positive length, the Inglis counts are exact; at
-  // the end, every solve was in equilibrium and the original epidermis is conserved.
+  // scripted fracture (inside a block), checked after every block of steps: each fracture
+  // element's copies of its record agree with it, epidermis elements have positive length, the
+  // Inglis counts are exact; at the end, every solve was in equilibrium and the original
+  // epidermis is conserved.
   for (const std::string& name : strip_preset_names()) {
     StripParams p = *strip_preset(name);
     if (name == "plated") p.refracture_width = 0.02;
