@@ -49,7 +49,9 @@ inline double back_row(double r, double cprime, double p) { return std::fma(-cpr
 // Where the processor has FMA instructions (x86-64-v3), the hot solves are compiled a second
 // time to use them, chosen when the program loads; elsewhere std::fma is done in software.
 // (The build turns off implicit contraction, so both compilations give the same bits.)
-#if defined(__x86_64__) && defined(__GNUC__)
+// Not under ThreadSanitizer: it instruments the clones' resolver, which the loader runs
+// before the sanitizer's runtime is up (the program then crashes at load).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_THREAD__)
 #define PHELLEM_FMA_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define PHELLEM_FMA_CLONES
