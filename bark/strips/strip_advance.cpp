@@ -20,7 +20,7 @@ constexpr size_t kAhead = 16;  // elements fetched ahead in the first pass
 
 void StripModel::advance_strip(size_t j, int grower, int step, bool count_widths) {
   // By fracture id: roots are found in measure_fractures (the sweep may merge meanwhile).
-  InglisSums& sums = count_widths ? sums_[grower] : unused_sums_[grower];
+  InglisSums* sums = count_widths ? &sums_[grower] : nullptr;
   if (pending_[j]) {
     refracture(j, step - 1);  // hardening changes elements, and then invalidates the factor
     const Strip& s = strips_[j];
@@ -36,7 +36,7 @@ void StripModel::advance_strip(size_t j, int grower, int step, bool count_widths
   scan_strip(j);
 }
 
-PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, InglisSums& sums) {
+PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, InglisSums* sums) {
   Strip& s = strips_[j];
   const EquilibriumFactor& f = factors_[j];
   const size_t n = s.size();
@@ -112,7 +112,7 @@ PHELLEM_FMA_CLONES void StripModel::advance_settled(size_t j, InglisSums& sums) 
       over |= length > e[i].rest * e[i].threshold;
     else {
       if (e[i].free_end()) tips.push_back(free_end(j, e[i], i, x[i], length));
-      if (e[i].id >= 0) sums.add(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
+      if (sums && e[i].id >= 0) sums->add(e[i].id, e[i].rest);  // (a break not yet given an id is counted at birth)
     }
   };
   x[0] = a[0] + (r[0] - fact * u[0]);

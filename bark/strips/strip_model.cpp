@@ -234,7 +234,7 @@ void StripModel::settle() {
   for (size_t j = 0; j < strips_.size(); ++j) {
     if (!pending_[j]) continue;
     refracture(j, step_ - 1);
-    plasticity(j, sums_[0]);
+    plasticity(j, &sums_[0]);
     pending_[j] = 0;
   }
   for (long long& h : hardened_) {
@@ -255,7 +255,7 @@ double StripModel::scale_metric(size_t j, double g) {
   return s.circumference;
 }
 
-void StripModel::grow_strip(size_t j, InglisSums& sums) {
+void StripModel::grow_strip(size_t j, InglisSums* sums) {
   // The substrate grows from step t to t + 1 (shrinking strategy seen forwards, sec. 5.2): each
   // anchor keeps its substrate point θ. Stiffnesses and attachment are unchanged: plasticity
   // already gave the fracture elements K_f of their rest length.
@@ -313,7 +313,7 @@ void StripModel::scan_strip(size_t j) {
   over_[j] = over;
 }
 
-void StripModel::plasticity(size_t j, InglisSums& sums, double growth) {
+void StripModel::plasticity(size_t j, InglisSums* sums, double growth) {
   // Long-term plasticity (sec. 5.1): the attachment springs restart at zero length; new
   // material fills the fractures, whose rest length becomes their current width.
   // Also adds each fracture element's width to the grower's Inglis sums by fracture id.
@@ -335,7 +335,7 @@ void StripModel::plasticity(size_t j, InglisSums& sums, double growth) {
       refactor |= k != e.stiffness;
       e.stiffness = k;
     }
-    if (e.id >= 0) sums.add(e.id, e.rest);  // (a break not yet given an id is counted at birth)
+    if (sums && e.id >= 0) sums->add(e.id, e.rest);  // (a break not yet given an id is counted at birth)
   }
   if (!s.cyclic) anchor[n] = x[n] * growth;
   if (refactor) factors_[j].valid = false;
@@ -452,8 +452,7 @@ void StripModel::sweep_step() {
   const bool upward = step % 2 == 0;
   const bool wrap = domain_.wrap_s && n > 1;
   auto strip_at = [&](size_t k) { return upward ? k : n - 1 - k; };
-  std::fill(owner_.begin(), owner_.end(), char(0));
-  Sweep& sw = sweeps_[0];
+  Sweep& sw = sweeps_[0];  // (owner_ stays all 0: a model that wraps never splits)
   start_sweep(sw, 0, 1);
   sw.step = step;
   const auto claimed = std::make_unique<std::atomic<char>[]>(n), grown = std::make_unique<std::atomic<char>[]>(n);
@@ -578,10 +577,7 @@ void StripModel::sweep_block(int K) {
   // The widths counted for the block's measure are those of its last step's growth: drop what
   // settle() summed since the last measure (the next measure would count those elements twice).
   if (K > 1)
-    for (InglisSums& t : sums_) {
-      std::fill(t.width.begin(), t.width.end(), 0);
-      std::fill(t.count.begin(), t.count.end(), 0);
-    }
+    for (InglisSums& t : sums_) t.clear();
   if (halves == 2) {
 #if defined(__SANITIZE_THREAD__)
     // ThreadSanitizer does not see TBB's synchronisation (libtbb is not instrumented): the
@@ -597,10 +593,6 @@ void StripModel::sweep_block(int K) {
     sweep_half(0, first, count0, K);
   }
   join_sweeps(halves);
-  for (InglisSums& t : unused_sums_) {
-    std::fill(t.width.begin(), t.width.end(), 0);
-    std::fill(t.count.begin(), t.count.end(), 0);
-  }
 }
 
 }  // namespace phellem::bark

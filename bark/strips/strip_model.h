@@ -30,6 +30,7 @@
 // any thread count.
 #pragma once
 
+#include <algorithm>
 #include <cassert>
 #include <functional>
 #include <vector>
@@ -152,11 +153,12 @@ class StripModel {
   // and plasticity if owed, growth, equilibrium and the scan (strip_advance.cpp).
   // `grower`: 0 for the sweep's thread, 1 for the helper (whose Inglis sums it adds to).
   // `step`: the step it grows for; `count_widths`: whether its fracture widths go to the
-  // grower's Inglis sums (the last step before a measure) or are dropped.
+  // grower's Inglis sums (the last step before a measure) or are not counted.
   void advance_strip(size_t j, int grower, int step, bool count_widths);
   struct InglisSums;
-  void advance_settled(size_t j, InglisSums& sums);
-  void grow_strip(size_t j, InglisSums& sums);
+  // `sums`: where the fracture widths are counted (nullptr: nowhere).
+  void advance_settled(size_t j, InglisSums* sums);
+  void grow_strip(size_t j, InglisSums* sums);
   // A step of the sweep alternating direction every step (strips that wrap around), and a block
   // of K steps swept as a wavefront (all other strips); see strip_model.cpp.
   void sweep_step();
@@ -178,7 +180,7 @@ class StripModel {
   void propagate_from(size_t j, Sweep& sw);
   double centre_theta(size_t j, size_t element) const;
   void refracture(size_t j, int step);
-  void plasticity(size_t j, InglisSums& sums, double growth = 1.0);
+  void plasticity(size_t j, InglisSums* sums, double growth = 1.0);
   double width_factor(size_t j, double theta) const;
 
   StripDomain domain_;
@@ -220,9 +222,12 @@ class StripModel {
       width[size_t(id)] += int64_t(w * 0x1p40 + 0.5);  // w >= 0
       count[size_t(id)] += 1;
     }
+    void clear() {
+      std::fill(width.begin(), width.end(), 0);
+      std::fill(count.begin(), count.end(), 0);
+    }
   };
   InglisSums sums_[2];
-  InglisSums unused_sums_[2];  // per grower: the widths of a block's earlier steps (dropped)
   std::vector<StripStats> strip_totals_;  // per strip: its counts since the last step() returned
   std::vector<int64_t> root_width_;  // measure_fractures(): scratch
   int step_ = 0;
