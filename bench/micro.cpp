@@ -5,10 +5,10 @@
 
 #include "bark/strips/strip_equilibrium.h"
 #include "renderer/bsdf.h"
-#include "renderer/displacement.h"
+#include "scene/displacement.h"
 #include "renderer/sampler.h"
-#include "renderer/tessellation.h"
-#include "renderer/tree_surface.h"
+#include "bark/geometry/tessellation.h"
+#include "scene/tree_surface.h"
 
 using namespace phellem;
 

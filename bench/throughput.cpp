@@ -19,7 +19,7 @@
 #include "renderer/integrator.h"
 #include "renderer/render_scene.h"
 #include "renderer/sampling.h"
-#include "renderer/scene_parser.h"
+#include "scene/scene_parser.h"
 
 using namespace phellem;
 using Clock = std::chrono::steady_clock;

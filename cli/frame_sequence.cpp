@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "renderer/atomic_file.h"
-#include "renderer/errors.h"
-#include "renderer/image_output.h"
+#include "util/atomic_file.h"
+#include "util/errors.h"
+#include "io/image_output.h"
 
 namespace phellem {
 

@@ -5,9 +5,9 @@
 
 #include "cli/frame_sequence.h"
 #include "cli/render_job.h"
-#include "renderer/errors.h"
+#include "util/errors.h"
 #include "renderer/render_scene.h"
-#include "renderer/strip_bark_tree.h"
+#include "scene/strip_bark_tree.h"
 
 namespace phellem {
 

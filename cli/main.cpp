@@ -17,12 +17,12 @@
 #include "cli/options.h"
 #include "cli/render_job.h"
 #include "cli/simulate.h"
-#include "renderer/atomic_file.h"
-#include "renderer/errors.h"
-#include "renderer/image_output.h"
+#include "util/atomic_file.h"
+#include "util/errors.h"
+#include "io/image_output.h"
 #include "renderer/integrator.h"
 #include "renderer/render_scene.h"
-#include "renderer/scene_parser.h"
+#include "scene/scene_parser.h"
 
 namespace phellem {
 

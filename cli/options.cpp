@@ -3,7 +3,7 @@
 #include <cctype>
 #include <charconv>
 
-#include "renderer/errors.h"
+#include "util/errors.h"
 
 namespace phellem::cli {
 

@@ -4,10 +4,10 @@
 
 #include <cstdio>
 
-#include "renderer/errors.h"
-#include "renderer/film.h"
-#include "renderer/image_output.h"
-#include "renderer/scene_parser.h"
+#include "util/errors.h"
+#include "io/film.h"
+#include "io/image_output.h"
+#include "scene/scene_parser.h"
 
 namespace phellem {
 

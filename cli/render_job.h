@@ -4,7 +4,7 @@
 
 #include "cli/options.h"
 #include "renderer/integrator.h"
-#include "renderer/scene_desc.h"
+#include "scene/scene_desc.h"
 
 namespace phellem {
 

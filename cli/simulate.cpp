@@ -9,12 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "renderer/atomic_file.h"
-#include "renderer/errors.h"
-#include "renderer/progress.h"
-#include "renderer/scene_parser.h"
+#include "util/atomic_file.h"
+#include "util/errors.h"
+#include "util/progress.h"
+#include "scene/scene_parser.h"
 #include "cli/simulate_stress.h"
-#include "renderer/strip_bark_tree.h"
+#include "scene/strip_bark_tree.h"
 
 namespace phellem {
 

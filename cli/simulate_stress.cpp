@@ -3,10 +3,10 @@
 #include <chrono>
 #include <fstream>
 
-#include "renderer/atomic_file.h"
-#include "renderer/cracked_mesh_io.h"
-#include "renderer/errors.h"
-#include "renderer/stress_bark_run.h"
+#include "util/atomic_file.h"
+#include "io/cracked_mesh_io.h"
+#include "util/errors.h"
+#include "scene/stress_bark_run.h"
 
 namespace phellem {
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/options.h"
-#include "renderer/scene_desc.h"
+#include "scene/scene_desc.h"
 
 namespace phellem {
 

@@ -10,7 +10,7 @@
 
 #include <optional>
 
-#include "renderer/math.h"
+#include "util/math.h"
 #include "renderer/microfacet.h"
 
 namespace phellem {

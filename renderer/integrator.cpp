@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "renderer/pixel_filter.h"
-#include "renderer/progress.h"
+#include "util/progress.h"
 #include "renderer/sampler.h"
 
 namespace phellem {

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "renderer/camera.h"
-#include "renderer/film.h"
+#include "io/film.h"
 #include "renderer/render_scene.h"
 
 namespace phellem {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "renderer/math.h"
+#include "util/math.h"
 #include "renderer/sampling.h"
 
 namespace phellem {

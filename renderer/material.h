@@ -2,7 +2,7 @@
 #pragma once
 
 #include "renderer/bsdf.h"
-#include "renderer/scene_desc.h"
+#include "scene/scene_desc.h"
 #include "renderer/textures.h"
 
 namespace phellem {

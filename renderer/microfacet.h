@@ -3,7 +3,7 @@
 // Visible Normals"; pdf and conventions as in pbrt-v4, sec. 9.6). Local frame: n = +z.
 #pragma once
 
-#include "renderer/math.h"
+#include "util/math.h"
 
 namespace phellem {
 

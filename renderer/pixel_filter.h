@@ -4,7 +4,7 @@
 #pragma once
 
 #include "renderer/sampling.h"
-#include "renderer/scene_desc.h"
+#include "scene/scene_desc.h"
 
 namespace phellem {
 

@@ -7,16 +7,16 @@
 #include <map>
 #include <mutex>
 
-#include "renderer/displacement.h"
-#include "renderer/errors.h"
-#include "renderer/mesh_io.h"
-#include "renderer/crack_profile.h"
-#include "renderer/mesh_source.h"
-#include "renderer/progress.h"
-#include "renderer/stress_bark_run.h"
-#include "renderer/strip_bark_tree.h"
-#include "renderer/tessellation.h"
-#include "renderer/tree_surface.h"
+#include "scene/displacement.h"
+#include "util/errors.h"
+#include "io/mesh_io.h"
+#include "bark/dressing/crack_profile.h"
+#include "scene/mesh_source.h"
+#include "util/progress.h"
+#include "scene/stress_bark_run.h"
+#include "scene/strip_bark_tree.h"
+#include "bark/geometry/tessellation.h"
+#include "scene/tree_surface.h"
 
 namespace phellem {
 

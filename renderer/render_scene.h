@@ -16,8 +16,8 @@
 #include "renderer/camera.h"
 #include "renderer/light.h"
 #include "renderer/material.h"
-#include "renderer/mesh.h"
-#include "renderer/scene_desc.h"
+#include "bark/geometry/mesh_data.h"
+#include "scene/scene_desc.h"
 #include "renderer/textures.h"
 
 namespace phellem {

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "renderer/hash.h"
+#include "util/hash.h"
 
 namespace phellem {
 

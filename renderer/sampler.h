@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "renderer/math.h"
+#include "util/math.h"
 
 namespace phellem {
 

@@ -2,7 +2,7 @@
 
 #include <numeric>
 
-#include "renderer/fast_trig.h"
+#include "util/fast_trig.h"
 
 namespace phellem {
 

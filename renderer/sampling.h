@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "renderer/math.h"
+#include "util/math.h"
 
 namespace phellem {
 

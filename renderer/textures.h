@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "renderer/math.h"
-#include "renderer/scene_desc.h"
+#include "util/math.h"
+#include "scene/scene_desc.h"
 
 
 namespace phellem {
@@ -37,8 +37,5 @@ class TextureStore {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-// Directory for converted textures ($XDG_CACHE_HOME/phellem or ~/.cache/phellem, else /tmp).
-std::string texture_cache_dir();
 
 }  // namespace phellem

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the reference images for tests/test_image_regression.cpp at 4096 spp.
+# Renders the reference images for tests/renderer/test_image_regression.cpp at 4096 spp.
 # Rerun only when a rendering change is intended, and look at the results before committing.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -10,7 +10,7 @@
 #include <map>
 
 #include "bark/stress/stress_mesh.h"
-#include "bark/strips/random.h"
+#include "util/random.h"
 
 namespace phellem::bark {
 

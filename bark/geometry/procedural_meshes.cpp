@@ -5,7 +5,7 @@
 #include <cmath>
 #include <map>
 
-#include "bark/strips/random.h"
+#include "util/random.h"
 
 namespace phellem::bark {
 

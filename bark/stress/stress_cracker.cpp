@@ -13,7 +13,7 @@
 #include "bark/stress/separation_tensor.h"
 #include "bark/stress/stress_patterns.h"
 #include "bark/stress/stress_relaxation.h"
-#include "bark/strips/random.h"
+#include "util/random.h"
 
 namespace phellem::bark {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "bark/strips/random.h"
+#include "util/random.h"
 
 namespace phellem::bark {
 

@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "bark/strips/fracture_skeleton.h"
-#include "bark/strips/random.h"
+#include "util/random.h"
 #include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip.h"
 #include "bark/strips/strip_domain.h"

@@ -1,0 +1,25 @@
+# Fails when a file includes a folder above its own in the layering
+#   util -> bark -> io -> scene -> renderer -> cli
+# (a folder may include its own and any folder to its left). Run as the `include_graph` test:
+#   cmake -DSOURCE_DIR=<repo> -P cmake/check_layers.cmake
+set(layers util bark io scene renderer cli)
+set(violations "")
+foreach(from_index RANGE 0 5)
+  list(GET layers ${from_index} from)
+  file(GLOB_RECURSE files "${SOURCE_DIR}/${from}/*.h" "${SOURCE_DIR}/${from}/*.cpp")
+  foreach(f IN LISTS files)
+    file(STRINGS "${f}" includes REGEX "^[ \t]*#[ \t]*include[ \t]+\"[a-z_]+/")
+    foreach(line IN LISTS includes)
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]+\"([a-z_]+)/.*" "\\1" to "${line}")
+      list(FIND layers "${to}" to_index)
+      if(to_index GREATER from_index)
+        file(RELATIVE_PATH rel "${SOURCE_DIR}" "${f}")
+        string(APPEND violations "  ${rel} includes ${to}/ (${from}/ may include only folders to its left)\n")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(violations)
+  message(FATAL_ERROR "include graph: layering util -> bark -> io -> scene -> renderer -> cli broken:\n${violations}")
+endif()
+message(STATUS "include graph: one-way (util -> bark -> io -> scene -> renderer -> cli)")

@@ -1,0 +1,100 @@
+// glTF in: opening a file with every failure reported as a UserError naming it, and reading
+// accessors with their bounds checked (shared by the mesh loader and the CrackedMesh reader).
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "util/errors.h"
+
+namespace phellem {
+
+// Loads a .gltf or .glb (images are kept encoded; OpenImageIO decodes them later).
+tinygltf::Model open_gltf(const std::string& path);
+
+class GltfReader {
+ public:
+  GltfReader(const tinygltf::Model& m, std::string file) : m_(m), file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const { throw UserError(file_, where, what); }
+
+  // Reads accessor `index` as floats with `comps` components per element.
+  std::vector<float> floats(int index, int comps, const std::string& where) const {
+    const tinygltf::Accessor& a = accessor(index, where);
+    const int nc = tinygltf::GetNumComponentsInType(a.type);
+    if (nc != comps) fail(where, "accessor " + std::to_string(index) + " has " + std::to_string(nc) + " components, expected " + std::to_string(comps));
+    std::vector<float> out(a.count * comps);
+    visit(a, index, where, [&](size_t i, int c, const unsigned char* p) {
+      float v;
+      switch (a.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&v, p, 4); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = a.normalized ? *p / 255.0f : *p; break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t s; std::memcpy(&s, p, 2); v = a.normalized ? s / 65535.0f : s; break; }
+        case TINYGLTF_COMPONENT_TYPE_BYTE: v = a.normalized ? std::max(*reinterpret_cast<const int8_t*>(p) / 127.0f, -1.0f) : *reinterpret_cast<const int8_t*>(p); break;
+        case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t s; std::memcpy(&s, p, 2); v = a.normalized ? std::max(s / 32767.0f, -1.0f) : s; break; }
+        default: fail(where, "accessor " + std::to_string(index) + " has a component type not allowed for vertex data");
+      }
+      if (!std::isfinite(v)) fail(where, "accessor " + std::to_string(index) + " contains a non-finite value");
+      out[i * comps + c] = v;
+    });
+    return out;
+  }
+
+  std::vector<uint32_t> indices(int index, const std::string& where) const {
+    const tinygltf::Accessor& a = accessor(index, where);
+    if (a.type != TINYGLTF_TYPE_SCALAR) fail(where, "index accessor must be SCALAR");
+    std::vector<uint32_t> out(a.count);
+    visit(a, index, where, [&](size_t i, int, const unsigned char* p) {
+      switch (a.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = *p; break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t s; std::memcpy(&s, p, 2); out[i] = s; break; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&out[i], p, 4); break;
+        default: fail(where, "index accessor must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+      }
+    });
+    return out;
+  }
+
+ private:
+  const tinygltf::Accessor& accessor(int index, const std::string& where) const {
+    if (index < 0 || size_t(index) >= m_.accessors.size())
+      fail(where, "accessor index " + std::to_string(index) + " out of range (file has " + std::to_string(m_.accessors.size()) + " accessors)");
+    return m_.accessors[index];
+  }
+
+  template <typename F>
+  void visit(const tinygltf::Accessor& a, int index, const std::string& where, F&& f) const {
+    const std::string acc = "accessors[" + std::to_string(index) + "]";
+    if (a.sparse.isSparse) fail(where, acc + " is sparse; sparse accessors are not supported");
+    if (a.bufferView < 0 || size_t(a.bufferView) >= m_.bufferViews.size())
+      fail(where, acc + ".bufferView " + std::to_string(a.bufferView) + " out of range");
+    const tinygltf::BufferView& bv = m_.bufferViews[a.bufferView];
+    if (bv.buffer < 0 || size_t(bv.buffer) >= m_.buffers.size())
+      fail(where, "bufferViews[" + std::to_string(a.bufferView) + "].buffer " + std::to_string(bv.buffer) + " out of range");
+    const tinygltf::Buffer& buf = m_.buffers[bv.buffer];
+    const int comp_size = tinygltf::GetComponentSizeInBytes(a.componentType);
+    const int nc = tinygltf::GetNumComponentsInType(a.type);
+    if (comp_size <= 0 || nc <= 0) fail(where, acc + " has an invalid componentType or type");
+    const size_t elem = size_t(comp_size) * nc;
+    const size_t stride = bv.byteStride ? bv.byteStride : elem;
+    if (stride < elem) fail(where, "bufferViews[" + std::to_string(a.bufferView) + "].byteStride is smaller than one element");
+    const size_t view_end = bv.byteOffset + bv.byteLength;
+    if (view_end > buf.data.size())
+      fail(where, "bufferViews[" + std::to_string(a.bufferView) + "] reaches byte " + std::to_string(view_end) + " but buffers[" + std::to_string(bv.buffer) + "] holds " + std::to_string(buf.data.size()) + " bytes (truncated or missing buffer?)");
+    if (a.count > 0 && a.byteOffset + (a.count - 1) * stride + elem > bv.byteLength)
+      fail(where, acc + " (" + std::to_string(a.count) + " elements) overruns bufferViews[" + std::to_string(a.bufferView) + "]");
+    const unsigned char* base = buf.data.data() + bv.byteOffset + a.byteOffset;
+    for (size_t i = 0; i < a.count; ++i)
+      for (int c = 0; c < nc; ++c) f(i, c, base + i * stride + size_t(c) * comp_size);
+  }
+
+  const tinygltf::Model& m_;
+  std::string file_;
+};
+
+}  // namespace phellem

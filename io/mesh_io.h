@@ -1,0 +1,24 @@
+// Mesh files in: glTF 2.0 (.gltf/.glb, through tinygltf) and Wavefront OBJ (tinyobjloader).
+// Node hierarchies are flattened into the returned meshes; materials come along.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bark/geometry/mesh_data.h"
+#include "io/material_desc.h"
+
+namespace phellem {
+
+struct LoadedModel {
+  std::vector<MeshData> meshes;          // material indexes `materials` (-1: none)
+  std::vector<MaterialDesc> materials;   // from the file (glTF PBR / OBJ MTL)
+};
+
+// Every problem is a UserError naming the file and the glTF element (e.g.
+// "meshes[0].primitives[1].indices") or OBJ line.
+LoadedModel load_mesh_file(const std::string& path);
+LoadedModel load_gltf(const std::string& path);
+LoadedModel load_obj(const std::string& path);
+
+}  // namespace phellem

@@ -1,0 +1,19 @@
+// The triangle mesh of a scene mesh object, as the bark simulations take it (bark::TriMesh)
+// and as the renderer takes it (MeshData): read from its file (all its meshes merged, the
+// object's transform applied) or made from its procedural description.
+#pragma once
+
+#include "bark/geometry/tri_mesh.h"
+#include "bark/geometry/mesh_data.h"
+#include "scene/scene_desc.h"
+
+namespace phellem {
+
+// Errors in the file are UserErrors naming it.
+bark::TriMesh object_trimesh(const ObjectDesc& o);
+bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p);
+
+// Positions, UVs and triangles (no normals).
+MeshData to_mesh_data(const bark::TriMesh& t);
+
+}  // namespace phellem

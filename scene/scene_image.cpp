@@ -1,0 +1,30 @@
+#include "scene/scene_image.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+
+#include "scene/json_reader.h"
+
+namespace phellem {
+
+SceneImage read_scene_image(const JsonValue& v, const std::string& base_dir) {
+  std::filesystem::path p(v.string());
+  if (p.is_relative()) p = std::filesystem::path(base_dir) / p;
+  if (!std::filesystem::is_regular_file(p)) v.fail("file not found: " + p.string());
+  auto in = OIIO::ImageInput::open(p.string());
+  if (!in) v.fail("cannot read image " + p.string() + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  SceneImage img;
+  img.path = p.string();
+  img.width = spec.width;
+  img.height = spec.height;
+  img.channels = spec.nchannels;
+  img.encoded = spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
+  img.pixels.resize(size_t(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+    v.fail("cannot read image " + p.string() + ": " + in->geterror());
+  return img;
+}
+
+}  // namespace phellem

@@ -1,0 +1,44 @@
+#include "tests/support/test_util.h"
+#include <sys/wait.h>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+namespace phellem::test {
+namespace {
+// The temporary directories this test process made, removed when it exits (set
+// PHELLEM_KEEP_TEST_FILES=1 to keep them for a look).
+struct TempDirs {
+  std::vector<std::filesystem::path> dirs;
+  ~TempDirs() {
+    if (std::getenv("PHELLEM_KEEP_TEST_FILES")) return;
+    std::error_code ec;
+    for (const auto& d : dirs) std::filesystem::remove_all(d, ec);
+  }
+};
+TempDirs& temp_dirs() {
+  static TempDirs dirs;
+  return dirs;
+}
+}  // namespace
+CommandResult run_phellem(const std::string& args) {
+  const std::string cmd = std::string(PHELLEM_BINARY) + " " + args + " --quiet 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+std::string temp_dir(const std::string& name) {
+  auto d = std::filesystem::temp_directory_path() / ("phellem_test_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  temp_dirs().dirs.push_back(d);
+  return d.string();
+}
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+}

@@ -1,0 +1,46 @@
+#include "util/atomic_file.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "util/errors.h"
+
+namespace phellem {
+
+namespace fs = std::filesystem;
+
+void ensure_parent_dir(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  if (parent.empty()) return;
+  std::error_code ec;
+  fs::create_directories(parent, ec);
+  if (ec || !fs::is_directory(parent)) throw UserError(path, "", "cannot create output folder " + parent.string() + ": " + ec.message());
+}
+
+void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+  ensure_parent_dir(path);
+  const fs::path target(path);
+  // Hidden temporary with the same extension: ".NAME.tmpPID.EXT".
+  std::string name(1, '.');
+  name += target.stem().string();
+  name += ".tmp";
+  name += std::to_string(getpid());
+  name += target.extension().string();
+  const fs::path tmp = target.parent_path() / name;
+  try {
+    write(tmp.string());
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw;
+  }
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw UserError(path, "", "cannot write output: " + ec.message());
+  }
+}
+
+}  // namespace phellem
