@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<RenderScene> scene;
   for (int r = 0; r < repeat; ++r) {
     scene.reset();
-    scene = std::make_unique<RenderScene>(desc, desc.camera, w, h);
+    scene = build_render_scene(desc, desc.camera, w, h);
     build_s.push_back(scene->stats().bvh_s);
   }
   const auto& st = scene->stats();

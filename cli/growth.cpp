@@ -33,11 +33,17 @@ int run_growth(const cli::Options& o) {
       sims.emplace_back(oi, std::make_unique<TreeStripSimulation>(obj, oi, o.seed));
   }
   if (sims.empty()) throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
+  // Bark that does not grow with the frames (stress bark) is simulated once.
+  BarkResults still;
+  for (size_t oi = 0; oi < l.desc.objects.size(); ++oi) {
+    const ObjectDesc& obj = l.desc.objects[oi];
+    if (has_simulated_bark(obj) && !(obj.type == ObjectType::Tree && obj.tree.strip_bark && !obj.stress_bark))
+      still.objects.emplace(oi, simulate_object_bark(l.desc, oi, !o.quiet));
+  }
   const int frames = *o.frames;
   for (int f = 0; f < frames; ++f) {
     SceneDesc frame_desc = l.desc;
-    SceneBuildOptions build;
-    build.progress = !o.quiet;
+    BarkResults bark = still;
     for (auto& [oi, sim] : sims) {
       const int step = int(std::lround(double(sim->steps_total()) * double(f + 1) / double(frames)));
       sim->run_to(step, !o.quiet);
@@ -47,10 +53,10 @@ int run_growth(const cli::Options& o) {
       TreeDesc& tree = frame_desc.objects[oi].tree;
       for (float& r : tree.radius) r *= k;
       scale_radii(tree.branches, k);
-      build.bark[oi] = sim->surfaces();
+      bark.objects[oi].strip_parts = sim->surfaces();
     }
-    RenderScene scene(frame_desc, frame_desc.camera, l.width, l.height, &build);
-    render_frame(o, l, scene, Camera(frame_desc.camera, l.width, l.height), f, frames);
+    const auto scene = build_render_scene(frame_desc, bark, frame_desc.camera, l.width, l.height, !o.quiet);
+    render_frame(o, l, *scene, Camera(frame_desc.camera, l.width, l.height), f, frames);
   }
   if (!o.mp4.empty()) encode_mp4(o);
   return 0;

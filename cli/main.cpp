@@ -43,17 +43,16 @@ int run_render(const cli::Options& o) {
   Loaded l = load(o);
   const double t_load = since(t0);
   const auto t1 = Clock::now();
-  SceneBuildOptions build;
-  build.progress = !o.quiet;
-  RenderScene scene(l.desc, l.desc.camera, l.width, l.height, &build);
+  const BarkResults bark = simulate_bark(l.desc, !o.quiet);
+  const auto scene = build_render_scene(l.desc, bark, l.desc.camera, l.width, l.height, !o.quiet);
   const double t_build = since(t1);
   const Camera camera(l.desc.camera, l.width, l.height);
-  RenderResult res = render_image(scene, camera, l.width, l.height, l.settings);
+  RenderResult res = render_image(*scene, camera, l.width, l.height, l.settings);
   const std::string exr = o.exr.empty() && o.png.empty() ? std::string("render.exr") : o.exr;
   if (!exr.empty()) write_exr(res.film, exr);
   if (!o.png.empty()) write_png(res.film, o.png, o.view.empty() ? default_view() : o.view);
   const double total = since(t0);
-  const auto& gs = scene.stats();
+  const auto& gs = scene->stats();
   if (!o.quiet)
     std::fprintf(stderr, "phellem: %dx%d, %d spp, %lld triangles (%lld diced), %.2f Mrays/s, %.1fs total\n", l.width, l.height,
                  l.settings.spp, gs.triangles, gs.diced_triangles, res.rays / res.seconds * 1e-6, total);
@@ -63,7 +62,7 @@ int run_render(const cli::Options& o) {
     nlohmann::json j;
     j["spp"] = l.settings.spp;
     j["resolution"] = {l.width, l.height};
-    j["time_s"] = {{"total", total}, {"load", t_load}, {"build", t_build}, {"bark", build.bark_seconds}, {"tessellate", gs.tessellate_s}, {"bvh", gs.bvh_s}, {"render", res.seconds}};
+    j["time_s"] = {{"total", total}, {"load", t_load}, {"build", t_build}, {"bark", bark.seconds}, {"tessellate", gs.tessellate_s}, {"bvh", gs.bvh_s}, {"render", res.seconds}};
     j["rays"] = res.rays;
     j["mrays_per_s"] = res.rays / res.seconds * 1e-6;
     j["triangles"] = gs.triangles;
@@ -90,14 +89,13 @@ int run_turntable(const cli::Options& o) {
   check_frame_outputs(o);
   Loaded l = load(o);
   // Geometry is diced once, for the first frame's camera, so it does not crawl.
-  SceneBuildOptions build;
-  build.progress = !o.quiet;
-  RenderScene scene(l.desc, l.desc.camera, l.width, l.height, &build);
+  const BarkResults bark = simulate_bark(l.desc, !o.quiet);
+  const auto scene = build_render_scene(l.desc, bark, l.desc.camera, l.width, l.height, !o.quiet);
   const int frames = *o.frames;
   const float degrees = o.degrees.value_or(360.0f);
   for (int f = 0; f < frames; ++f) {
     const Camera camera(Camera::orbit(l.desc.camera, degrees * float(f) / float(frames)), l.width, l.height);
-    render_frame(o, l, scene, camera, f, frames);
+    render_frame(o, l, *scene, camera, f, frames);
   }
   if (!o.mp4.empty()) encode_mp4(o);
   return 0;

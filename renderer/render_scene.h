@@ -12,11 +12,12 @@
 #include <vector>
 
 #include "bark/dressing/bark_surface.h"
-#include "bark/stress/cracked_mesh.h"
 #include "renderer/camera.h"
 #include "renderer/light.h"
 #include "renderer/material.h"
+#include "renderer/scene_contents.h"
 #include "bark/geometry/mesh_data.h"
+#include "scene/bark_results.h"
 #include "scene/scene_desc.h"
 #include "renderer/textures.h"
 
@@ -33,24 +34,13 @@ struct SurfaceHit {
   int material = 0;
   int object_id = 0;          // 1-based object index in the scene file
   int area_light = -1;        // triangle index in the area lights, or -1
-  // Bark models (BarkSurface): fracture coverage, normalized depth, and the dressed albedo
-  // that replaces the material's base colour when `bark` is set.
+  // The object's BarkSurface (either bark model) shaded here: fracture coverage, normalized
+  // depth, and either a dressed albedo replacing the material's base colour (`bark`) or a
+  // depth darkening of it (`albedo_scale`).
   float crack_mask = 0, crack_depth = 0;
   bool bark = false;
   Color bark_albedo = Color::Zero();
-  float albedo_scale = 1.0f;  // stress-bark cracks: depth darkening of the material's base colour
-};
-
-// How a RenderScene is built beyond the SceneDesc: bark surfaces already simulated (per
-// 0-based object index, one per tree part) — a tree with strip bark and no entry here is
-// simulated while the scene is built — and whether that shows progress.
-struct SceneBuildOptions {
-  std::map<size_t, std::vector<std::shared_ptr<const bark::BarkSurface>>> bark;
-  // Stress-bark meshes already cracked (per 0-based object index); others are cracked while the
-  // scene is built.
-  std::map<size_t, std::shared_ptr<const bark::CrackedMesh>> cracked;
-  bool progress = false;
-  double bark_seconds = 0;  // out: time spent simulating and dressing bark
+  float albedo_scale = 1.0f;
 };
 
 struct GeometryStats {
@@ -93,11 +83,21 @@ inline RTCRayHit make_rayhit(const Vec3f& o, const Vec3f& d, float tmax) {
   return rh;
 }
 
+// Built in stages like pbrt-v4's, each a function of its inputs: the scene's bark is simulated
+// first (scene/bark_results.h), then load (renderer/scene_contents.h) -> tessellate
+// (renderer/scene_dicing.h) -> BVH (here) -> lights (renderer/scene_lights.h).
 class RenderScene {
+  struct Key {
+    explicit Key() = default;
+  };
+
  public:
-  // Compiles the scene. `dicing` is the camera used for screen-space tessellation (the render
-  // camera by default; a turntable passes its first frame so geometry does not crawl).
-  RenderScene(const SceneDesc& desc, const CameraDesc& dicing, int width, int height, SceneBuildOptions* options = nullptr);
+  explicit RenderScene(Key);  // through build() only
+  // `dicing` is the camera used for screen-space tessellation (the render camera by default; a
+  // turntable passes its first frame so geometry does not crawl). Every object with bark must
+  // have its entry in `bark`.
+  static std::unique_ptr<RenderScene> build(const SceneDesc& desc, const BarkResults& bark, const CameraDesc& dicing, int width,
+                                            int height, bool progress = false);
   ~RenderScene();
   RenderScene(const RenderScene&) = delete;
   RenderScene& operator=(const RenderScene&) = delete;
@@ -110,7 +110,6 @@ class RenderScene {
   const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
   const std::vector<const Light*>& infinite_lights() const { return infinite_; }
   const AreaLights* area_lights() const { return area_; }
-  // Light selection ∝ power; returns the chosen light and its probability.
   const GeometryStats& stats() const { return stats_; }
   RTCScene embree_scene() const { return scene_.get(); }
 
@@ -118,8 +117,11 @@ class RenderScene {
   struct Shape;
   struct Prototype;
   struct Instance;
+  // Stage 3: the Embree scene from the loaded pieces and the diced meshes, in that order;
+  // returns the emissive triangles.
+  std::vector<AreaLights::Triangle> build_bvh(const SceneContents& contents, std::vector<MeshData> diced);
   void add_mesh_to(RTCScene scene, std::vector<Shape>& shapes, std::shared_ptr<const MeshData> mesh, int material, int object_id,
-                   int area_first, std::shared_ptr<const bark::BarkSurface> bark = nullptr, float crack_darkening = -1);
+                   int area_first, std::shared_ptr<const bark::BarkSurface> bark = nullptr);
   void fill_hit(const struct RTCRayHit& rh, const Ray& ray, SurfaceHit* hit) const;
 
   DevicePtr device_;
@@ -136,5 +138,11 @@ class RenderScene {
   std::shared_ptr<std::atomic<long long>> embree_bytes_now_, embree_bytes_peak_;
   std::shared_ptr<EmbreeErrors> embree_errors_;
 };
+
+// The render scene of `desc` with bark already simulated.
+std::unique_ptr<RenderScene> build_render_scene(const SceneDesc& desc, const BarkResults& bark, const CameraDesc& dicing, int width,
+                                                int height, bool progress = false);
+// Simulates the scene's bark first (tests, benchmarks, one-off renders).
+std::unique_ptr<RenderScene> build_render_scene(const SceneDesc& desc, const CameraDesc& dicing, int width, int height);
 
 }  // namespace phellem

@@ -122,10 +122,10 @@ GlbMesh TreeStripSimulation::mesh(size_t k, int W, int H) const {
   return out;
 }
 
-std::vector<std::shared_ptr<const bark::BarkSurface>> TreeStripSimulation::surfaces() const {
-  std::vector<std::shared_ptr<const bark::BarkSurface>> out;
+std::vector<std::shared_ptr<const bark::FieldBarkSurface>> TreeStripSimulation::surfaces() const {
+  std::vector<std::shared_ptr<const bark::FieldBarkSurface>> out;
   for (size_t k = 0; k < parts_.size(); ++k)
-    out.push_back(std::make_shared<bark::BarkSurface>(field(k), desc_->depth.max_depth));
+    out.push_back(std::make_shared<bark::FieldBarkSurface>(field(k), desc_->depth.max_depth));
   return out;
 }
 

@@ -1,6 +1,6 @@
 // The strip-model bark of one scene `tree`: its cylinders (trunk and branches, from
 // build_tree) simulated together (bark::TreeStripBark), dressed into FractureFields and handed
-// to the renderer as BarkSurfaces. Used by `phellem simulate` (fields to EXR), by the render
+// to the renderer as FieldBarkSurfaces. Used by `phellem simulate` (fields to EXR), by the render
 // scene (displacement and shading) and by `phellem growth` (frames along the simulation).
 #pragma once
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "bark/dressing/bark_surface.h"
+#include "bark/dressing/field_bark_surface.h"
 #include "bark/dressing/field_color.h"
 #include "bark/strips/tree_bark.h"
 #include "io/gltf_writer.h"
@@ -58,7 +58,7 @@ class TreeStripSimulation {
   // sunk by the depth; "epidermis" and "fracture" parts sharing the vertices.
   GlbMesh mesh(size_t k, int width = 0, int height = 0) const;
   // Every part's BarkSurface in the current state, at the automatic resolution.
-  std::vector<std::shared_ptr<const bark::BarkSurface>> surfaces() const;
+  std::vector<std::shared_ptr<const bark::FieldBarkSurface>> surfaces() const;
 
  private:
   std::shared_ptr<const StripBarkDesc> desc_;

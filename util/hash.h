@@ -26,6 +26,12 @@ inline uint32_t hash_all(uint32_t a, Rest... rest) {
   return h;
 }
 
+inline uint64_t mix64(uint64_t z) {  // splitmix64 finalizer
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
 // Uniform float in [0, 1) from the top 24 bits.
 inline float u32_to_unit_float(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
 

@@ -4,13 +4,9 @@
 
 #include <cstdint>
 
-namespace phellem {
+#include "util/hash.h"
 
-inline uint64_t mix64(uint64_t z) {  // splitmix64 finalizer
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
+namespace phellem {
 
 class StreamRng {
  public:

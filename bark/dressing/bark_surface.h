@@ -1,46 +1,48 @@
-// BarkSurface: what the renderer and the preview take from a bark model for one surface
-// (DESIGN.md data flow). For strip bark it is one cylinder's dressed FractureField reduced to
-// what shading needs: the displacement into the fracture (metres, along the inward normal),
-// the fracture coverage, the normalized depth and the dressed albedo (depth darkening
-// included), sampled bilinearly over (u = θ / 2π periodic, v = s / length).
+// BarkSurface: what a renderer takes from a bark model for one surface (DESIGN.md data flow),
+// whichever model made it. Two questions:
+//  - displace(): how far the surface moves along its normal at a point (metres; negative goes
+//    into the bark), and the two attributes the point keeps for shading (stored per vertex
+//    by the dicer and interpolated across triangles);
+//  - shade(): the fracture coverage, the normalized depth and the albedo from those attributes.
+// Strip bark (FieldBarkSurface: a dressed FractureField over the part's (u, v)) and cracked
+// meshes (CrackBarkSurface: the V-profiles of the cracks, Spicker 2014 sec. 4.2) implement
+// it, so the path tracer and any later renderer displace and shade bark by the same functions.
 #pragma once
 
 #include <Eigen/Core>
-#include <vector>
-
-#include "bark/strips/fracture_field.h"
+#include <cstddef>
 
 namespace phellem::bark {
 
+// A point of the undisplaced surface.
+struct SurfacePoint {
+  Eigen::Vector2d param{0, 0};     // the surface's own (u, v) in [0, 1]² (u wraps around a trunk)
+  Eigen::Vector3f position{0, 0, 0};
+  Eigen::Vector3f normal{0, 0, 1};  // unit, outwards
+};
+
+struct BarkDisplacement {
+  float offset = 0;                         // metres along the normal (< 0: into the bark)
+  Eigen::Vector2f attributes{0, 0};         // kept per vertex, handed back to shade()
+};
+
+struct BarkShade {
+  float mask = 0;                           // fracture coverage in [0, 1]
+  float depth = 0;                          // normalized depth in [0, 1] (the crack AOV)
+  bool replaces_albedo = false;             // the bark's own albedo replaces the material's
+  Eigen::Vector3f albedo{0, 0, 0};          // when replaces_albedo (depth darkening included)
+  float albedo_scale = 1.0f;                // otherwise: the material's base colour × this
+};
+
 class BarkSurface {
  public:
-  BarkSurface() = default;
-  // `max_depth` normalizes the depth for the `crack` AOV and darkening.
-  BarkSurface(const FractureField& dressed, double max_depth);
-
-  struct Shade {
-    float mask = 0;        // fracture coverage in [0, 1]
-    float depth = 0;       // normalized depth in [0, 1]
-    Eigen::Vector3f albedo{0, 0, 0};
-  };
-  // Metres below the epidermis at (u, v).
-  float depth(double u, double v) const;
-  Shade shade(double u, double v) const;
-
-  int width() const { return width_; }
-  int height() const { return height_; }
-  double length() const { return length_; }
-  size_t memory_bytes() const { return texels_.capacity() * sizeof(Texel); }
-
- private:
-  struct Texel {
-    float depth, mask, r, g, b;
-  };
-  template <class F>
-  auto bilinear(double u, double v, F&& get) const;
-  int width_ = 0, height_ = 0;
-  double length_ = 0, max_depth_ = 1;
-  std::vector<Texel> texels_;
+  virtual ~BarkSurface() = default;
+  virtual BarkDisplacement displace(const SurfacePoint& p) const = 0;
+  virtual BarkShade shade(const Eigen::Vector2f& attributes) const = 0;
+  // Whether the bark can displace anything along the segment a–b of the undisplaced surface
+  // (a dicer refines only there).
+  virtual bool reaches(const Eigen::Vector3f& a, const Eigen::Vector3f& b) const = 0;
+  virtual size_t memory_bytes() const = 0;
 };
 
 }  // namespace phellem::bark

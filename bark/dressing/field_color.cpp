@@ -5,31 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "util/noise.h"
+
 namespace phellem::bark {
 
 namespace {
-
-// Lattice coordinates wrap after `nx` × `ny` cells when those are non-zero.
-float hash01(int64_t x, int64_t y, uint32_t seed, int64_t nx, int64_t ny) {
-  if (nx > 0) x = ((x % nx) + nx) % nx;
-  if (ny > 0) y = ((y % ny) + ny) % ny;
-  uint64_t h = uint64_t(x) * 0x9e3779b97f4a7c15ULL ^ (uint64_t(y) + 0x632be59bd9b4e019ULL) * 0xc2b2ae3d27d4eb4fULL ^ seed;
-  h ^= h >> 31;
-  h *= 0xbf58476d1ce4e5b9ULL;
-  h ^= h >> 29;
-  return float(h >> 40) * (1.0f / 16777216.0f);
-}
-
-float value_noise(double x, double y, uint32_t seed, int64_t nx, int64_t ny) {
-  const double fx = std::floor(x), fy = std::floor(y);
-  const int64_t ix = int64_t(fx), iy = int64_t(fy);
-  double tx = x - fx, ty = y - fy;
-  tx = tx * tx * (3 - 2 * tx);
-  ty = ty * ty * (3 - 2 * ty);
-  const float a = hash01(ix, iy, seed, nx, ny), b = hash01(ix + 1, iy, seed, nx, ny);
-  const float c = hash01(ix, iy + 1, seed, nx, ny), d = hash01(ix + 1, iy + 1, seed, nx, ny);
-  return float((a * (1 - tx) + b * tx) * (1 - ty) + (c * (1 - tx) + d * tx) * ty);
-}
 
 // A feature size fitted to a whole number of repeats of `period` (unchanged without one).
 double fit(double size, double period, int64_t* cells) {
@@ -64,7 +44,7 @@ Eigen::Vector3f ColorSample::at(double x, double y, double period_x, double peri
   auto noise = [&](double cx, double cy, uint32_t sd) {
     int64_t nx, ny;
     const double gx = fit(cx, period_x, &nx), gy = fit(cy, period_y, &ny);
-    return value_noise(x / gx, y / gy, sd, nx, ny);
+    return tileable_value_noise(x / gx, y / gy, sd, nx, ny);
   };
   const double g = grain;
   const float fibre = noise(g, 12 * g, seed);

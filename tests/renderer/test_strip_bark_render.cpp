@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bark/dressing/bark_surface.h"
+#include "bark/dressing/field_bark_surface.h"
 #include "bark/strips/tree_bark.h"
 #include "tests/support/render_helpers.h"
 #include "tests/support/strip_helpers.h"
@@ -55,7 +55,7 @@ TEST(TreeStripBark, WithoutAJunctionNothingCrosses) {
   EXPECT_EQ(tree.model(1).stats().arrived, 0);
 }
 
-TEST(BarkSurface, SamplesTexelCentresExactlyAndWrapsAroundTheTrunk) {
+TEST(FieldBarkSurface, SamplesTexelCentresExactlyAndWrapsAroundTheTrunk) {
   FractureField f;
   f.width = 4;
   f.height = 3;
@@ -69,18 +69,18 @@ TEST(BarkSurface, SamplesTexelCentresExactlyAndWrapsAroundTheTrunk) {
     f.opening[p] = float(p % 2);
     for (int c = 0; c < 3; ++c) f.color[3 * p + c] = 0.1f * float(c + 1);
   }
-  const BarkSurface s(f, 0.02);
+  const FieldBarkSurface s(f, 0.02);
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 4; ++x) {
       const double u = (x + 0.5) / 4, v = (y + 0.5) / 3;
       EXPECT_FLOAT_EQ(s.depth(u, v), f.depth[f.index(x, y)]);
-      EXPECT_FLOAT_EQ(s.shade(u, v).mask, f.opening[f.index(x, y)]);
-      EXPECT_FLOAT_EQ(s.shade(u, v).depth, f.depth[f.index(x, y)] / 0.02f);
+      EXPECT_FLOAT_EQ(s.shade_at(u, v).mask, f.opening[f.index(x, y)]);
+      EXPECT_FLOAT_EQ(s.shade_at(u, v).depth, f.depth[f.index(x, y)] / 0.02f);
     }
   // Halfway between the last and the first column: the average of both (no seam at θ = 0).
   EXPECT_FLOAT_EQ(s.depth(0.0, 0.5), 0.5f * (f.depth[f.index(3, 1)] + f.depth[f.index(0, 1)]));
   EXPECT_FLOAT_EQ(s.depth(1.0, 0.5), s.depth(0.0, 0.5));
-  EXPECT_FLOAT_EQ(s.shade(0.3, 0.4).albedo.y(), 0.2f);
+  EXPECT_FLOAT_EQ(s.shade_at(0.3, 0.4).albedo.y(), 0.2f);
 }
 
 TEST(StripBarkRender, DisplacementFollowsTheFieldDepthAndFillsTheCrackAov) {

@@ -7,14 +7,14 @@ namespace phellem::test {
 
 RenderResult render_json(const std::string& json, int threads, const std::string& base_dir) {
   const SceneDesc d = parse_scene(json, "<test>", base_dir);
-  RenderScene scene(d, d.camera, d.render.width, d.render.height);
+  const auto scene = build_render_scene(d, d.camera, d.render.width, d.render.height);
   RenderSettings s;
   s.spp = d.render.spp;
   s.max_depth = d.render.max_depth;
   s.seed = d.render.seed;
   s.filter = d.render.filter;
   s.threads = threads;
-  return render_image(scene, Camera(d.camera, d.render.width, d.render.height), d.render.width, d.render.height, s);
+  return render_image(*scene, Camera(d.camera, d.render.width, d.render.height), d.render.width, d.render.height, s);
 }
 
 bool interior_pixel(const Film& f, int x, int y) {

@@ -2,6 +2,8 @@
 // attachment, soft fractures that propagate readily.
 #pragma once
 
+#include "bark/strips/strip_domain.h"
+#include "bark/strips/strip_model.h"
 #include "bark/strips/strip_params.h"
 
 namespace phellem::test {
@@ -16,6 +18,17 @@ inline bark::StripParams quick_strip_params(int steps, double growth_rate) {
   p.inglis_threshold = 10;
   p.fracture_stiffness = {{0.0, 0.1}};
   return p;
+}
+
+// Small flat sample with quick settings.
+inline bark::StripParams small_strip_params() { return quick_strip_params(120, 1.004); }
+
+// A flat w × h sample grown for p.steps steps.
+inline bark::StripModel run_flat(const bark::StripParams& p, double w = 0.3, double h = 0.3, bool check = false) {
+  bark::StripModel m(bark::flat_domain(w, h, p), p);
+  m.set_check_equilibrium(check);
+  for (int i = 0; i < p.steps; ++i) m.step();
+  return m;
 }
 
 }  // namespace phellem::test

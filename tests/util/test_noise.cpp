@@ -46,3 +46,24 @@ TEST(Noise, FilteredFbmMatchesFbmWhenUnfilteredAndFadesBandsOut) {
 
 }  // namespace
 }  // namespace phellem
+
+namespace phellem {
+
+TEST(Noise, TileableValueNoiseWrapsAfterItsPeriodAndStaysInTheUnitInterval) {
+  const int64_t nx = 7, ny = 5;
+  for (int i = 0; i < 200; ++i) {
+    const double x = 0.37 * i - 20, y = 0.61 * i - 30;
+    const float v = tileable_value_noise(x, y, 9, nx, ny);
+    EXPECT_GE(v, 0.0f);
+    EXPECT_LE(v, 1.0f);
+    EXPECT_FLOAT_EQ(v, tileable_value_noise(x + nx, y, 9, nx, ny));
+    EXPECT_FLOAT_EQ(v, tileable_value_noise(x, y - 2 * ny, 9, nx, ny));
+  }
+  // At lattice points it is the lattice value; another seed gives another field.
+  EXPECT_FLOAT_EQ(tileable_value_noise(3, 2, 9, nx, ny), lattice_hash01(3, 2, 9, nx, ny));
+  int differ = 0;
+  for (int i = 0; i < 20; ++i) differ += tileable_value_noise(i + 0.5, 0.5, 9, 0, 0) != tileable_value_noise(i + 0.5, 0.5, 10, 0, 0);
+  EXPECT_GT(differ, 15);
+}
+
+}  // namespace phellem

@@ -144,8 +144,7 @@ TEST(Tessellation, DicingCameraFixesTheGeometryAndBudgetBoundsIt) {
     char buf[2048];
     std::snprintf(buf, sizeof buf, scene, cam, extra);
     const SceneDesc d = parse_scene(buf, "<t>", ".");
-    RenderScene rs(d, d.camera, 640, 480);
-    return rs.stats().diced_triangles;
+    return build_render_scene(d, d.camera, 640, 480)->stats().diced_triangles;
   };
   const long long a = triangles("0, 1, 3", ""), b = triangles("3, 2, 0", "");
   EXPECT_EQ(a, b);
@@ -162,10 +161,10 @@ TEST(Tessellation, ObjectSpaceDicingHitsTheTargetEdgeLength) {
   const SceneDesc d = parse_scene(R"({
     "render": {"tessellation": {"mode": "object", "edge_length": 0.01}},
     "objects": [{"type": "tree", "axis": [[0,0,0],[0,1,0]], "radius": 0.1}]})", "<t>", ".");
-  RenderScene rs(d, d.camera, 64, 48);
+  const auto rs = build_render_scene(d, d.camera, 64, 48);
   // A 1 m tube of circumference 0.628 m diced to ≤1 cm edges: ≥ 63 × 100 quads.
-  EXPECT_GE(rs.stats().diced_triangles, 2 * 63 * 100);
-  EXPECT_LE(rs.stats().diced_triangles, 2 * 63 * 100 * 2);
+  EXPECT_GE(rs->stats().diced_triangles, 2 * 63 * 100);
+  EXPECT_LE(rs->stats().diced_triangles, 2 * 63 * 100 * 2);
 }
 
 // An open 12-sided prism of radius 1 and height 1 around y, its seam column duplicated (u = 0

@@ -140,7 +140,7 @@ TEST(SeparationTensor, SymmetricForRandomStress) {
   StressMesh m = StressMesh::from(jittered_sheet(8, 8, 1, 1, 0.3, 7));
   uint64_t k = 0;
   for (FaceId f : m.mesh().faces()) {
-    StreamRng rng(3, k++, 0);
+    phellem::StreamRng rng(3, k++, 0);
     Eigen::Matrix2d s;
     s << rng.symmetric(), rng.symmetric(), 0, rng.symmetric();
     s(1, 0) = s(0, 1);

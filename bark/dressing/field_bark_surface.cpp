@@ -1,4 +1,4 @@
-#include "bark/dressing/bark_surface.h"
+#include "bark/dressing/field_bark_surface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 namespace phellem::bark {
 
-BarkSurface::BarkSurface(const FractureField& f, double max_depth)
+FieldBarkSurface::FieldBarkSurface(const FractureField& f, double max_depth)
     : width_(f.width), height_(f.height), length_(f.length), max_depth_(max_depth > 0 ? max_depth : 1.0) {
   texels_.resize(size_t(width_) * height_);
   for (size_t p = 0; p < texels_.size(); ++p)
@@ -14,7 +14,7 @@ BarkSurface::BarkSurface(const FractureField& f, double max_depth)
 }
 
 template <class F>
-auto BarkSurface::bilinear(double u, double v, F&& get) const {
+auto FieldBarkSurface::bilinear(double u, double v, F&& get) const {
   // Texel centres at (i + 0.5) / width; u wraps (cyclic strips), v clamps.
   double x = (u - std::floor(u)) * width_ - 0.5, y = std::clamp(v, 0.0, 1.0) * height_ - 0.5;
   const double fx = std::floor(x), fy = std::floor(y);
@@ -29,13 +29,23 @@ auto BarkSurface::bilinear(double u, double v, F&& get) const {
   return T((get(a) * (1 - tx) + get(b) * tx) * (1 - ty) + (get(c) * (1 - tx) + get(d) * tx) * ty);
 }
 
-float BarkSurface::depth(double u, double v) const {
+float FieldBarkSurface::depth(double u, double v) const {
   if (texels_.empty()) return 0;
   return bilinear(u, v, [](const Texel& t) { return t.depth; });
 }
 
-BarkSurface::Shade BarkSurface::shade(double u, double v) const {
-  Shade s;
+BarkDisplacement FieldBarkSurface::displace(const SurfacePoint& p) const {
+  BarkDisplacement d;
+  d.offset = -depth(p.param.x(), p.param.y());
+  d.attributes = p.param.cast<float>();
+  return d;
+}
+
+BarkShade FieldBarkSurface::shade(const Eigen::Vector2f& uv) const { return shade_at(uv.x(), uv.y()); }
+
+BarkShade FieldBarkSurface::shade_at(double u, double v) const {
+  BarkShade s;
+  s.replaces_albedo = true;
   if (texels_.empty()) return s;
   s.mask = bilinear(u, v, [](const Texel& t) { return t.mask; });
   s.depth = std::clamp(float(bilinear(u, v, [](const Texel& t) { return t.depth; }) / max_depth_), 0.0f, 1.0f);

@@ -1,0 +1,47 @@
+// FieldBarkSurface: strip bark's BarkSurface (bark/dressing/bark_surface.h) — one cylinder's
+// dressed FractureField reduced to what shading needs: the displacement into the fracture (metres, along the inward normal),
+// the fracture coverage, the normalized depth and the dressed albedo (depth darkening
+// included), sampled bilinearly over (u = θ / 2π periodic, v = s / length).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "bark/dressing/bark_surface.h"
+#include "bark/strips/fracture_field.h"
+
+namespace phellem::bark {
+
+class FieldBarkSurface final : public BarkSurface {
+ public:
+  FieldBarkSurface() = default;
+  // `max_depth` normalizes the depth for the `crack` AOV and darkening.
+  FieldBarkSurface(const FractureField& dressed, double max_depth);
+
+  // Inwards by the fracture depth at the point's (u, v); the attributes are (u, v) itself.
+  BarkDisplacement displace(const SurfacePoint& p) const override;
+  // The dressed field at (u, v) = attributes: its albedo replaces the material's.
+  BarkShade shade(const Eigen::Vector2f& uv) const override;
+  bool reaches(const Eigen::Vector3f&, const Eigen::Vector3f&) const override { return !texels_.empty(); }
+
+  // Metres below the epidermis at (u, v).
+  float depth(double u, double v) const;
+  BarkShade shade_at(double u, double v) const;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  double length() const { return length_; }
+  size_t memory_bytes() const override { return texels_.capacity() * sizeof(Texel); }
+
+ private:
+  struct Texel {
+    float depth, mask, r, g, b;
+  };
+  template <class F>
+  auto bilinear(double u, double v, F&& get) const;
+  int width_ = 0, height_ = 0;
+  double length_ = 0, max_depth_ = 1;
+  std::vector<Texel> texels_;
+};
+
+}  // namespace phellem::bark

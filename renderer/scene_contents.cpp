@@ -1,0 +1,243 @@
+#include "renderer/scene_contents.h"
+
+#include <map>
+
+#include "io/mesh_io.h"
+#include "scene/displacement.h"
+#include "scene/mesh_source.h"
+#include "scene/tree_surface.h"
+#include "util/errors.h"
+
+namespace phellem {
+
+namespace {
+
+std::shared_ptr<MeshData> padded(MeshData m) {
+  // Embree reads vertex buffers with 16-byte loads: keep one spare element after the end.
+  m.positions.reserve(m.positions.size() + 1);
+  return std::make_shared<MeshData>(std::move(m));
+}
+
+MeshData plane_mesh(const ObjectDesc& o) {
+  const Frame f(o.normal);
+  MeshData m;
+  const float hx = 0.5f * o.size.x(), hy = 0.5f * o.size.y();
+  const Vec2f corners[4] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}};
+  for (const auto& c : corners) {
+    m.positions.push_back(o.point + f.s * c.x() + f.t * c.y());
+    m.normals.push_back(o.normal);
+    m.uvs.push_back(c / o.uv_scale);
+    m.tangents.emplace_back(f.s.x(), f.s.y(), f.s.z(), 1.0f);
+  }
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+MeshData sphere_mesh(const Vec3f& c, float r) {
+  MeshData m;
+  const int nu = 96, nv = 48;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const float th = kPi * j / nv, ph = kTwoPi * i / nu;
+      const Vec3f n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+      m.positions.push_back(c + r * n);
+      m.normals.push_back(n);
+      m.uvs.emplace_back(float(i) / nu, 1.0f - float(j) / nv);
+    }
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const uint32_t a = j * (nu + 1) + i, b = a + 1, d = a + nu + 1, e = d + 1;
+      m.indices.insert(m.indices.end(), {a, e, b, a, d, e});
+    }
+  return m;
+}
+
+const ObjectBark& bark_of(const BarkResults& bark, size_t oi, const ObjectDesc& o) {
+  const ObjectBark* b = bark.find(oi);
+  if (!b) throw std::logic_error("object " + std::to_string(oi) + " (" + o.where.path + "): bark not simulated before the render scene");
+  return *b;
+}
+
+// Stress bark (mesh or tree): the cracked mesh, displaced by its cracks' V-profiles as real
+// geometry, diced only where the cracks reach.
+DicingJob stress_job(const SceneDesc& desc, const ObjectDesc& o, const bark::CrackedMesh& cracked, int mat, int object_id) {
+  MeshData base = to_mesh_data(cracked.mesh);
+  compute_vertex_normals(base, true);  // one normal per position: seams shade (and displace) alike
+  std::shared_ptr<const bark::CrackBarkSurface> surface = crack_surface(o, cracked);
+  DicingJob j;
+  j.material = mat;
+  j.object_id = object_id;
+  j.base = std::make_shared<MeshData>(std::move(base));
+  // A mesh's own procedural displacement adds to the cracks (a tree's is already in its mesh);
+  // it reaches everywhere, so the dicing is then uniform.
+  const bool extra = o.type == ObjectType::Mesh && o.displacement.type != DisplacementDesc::Type::None;
+  const DisplacementFn own = extra ? make_displacement(o.displacement) : DisplacementFn{};
+  j.bark_disp = [surface, own](const Vec2f& uv, const Vec3f& p, const Vec3f& n, Vec2f* params) {
+    bark::SurfacePoint sp;
+    sp.position = p;
+    sp.normal = n;
+    const bark::BarkDisplacement d = surface->displace(sp);
+    if (params) *params = d.attributes;
+    return (own ? own(uv, p) : 0.0f) + d.offset;
+  };
+  if (desc.render.tessellation.crack_aware && !extra)
+    j.refine = [surface](const Vec3f& a, const Vec3f& b) { return surface->reaches(a, b); };
+  j.bark = surface;
+  return j;
+}
+
+}  // namespace
+
+SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark, TextureStore& textures) {
+  SceneContents c;
+  // Materials: the scene's, then a default grey, then those of mesh files as they load.
+  for (const auto& m : desc.materials) c.materials.push_back(compile_material(m, textures));
+  const int default_material = int(c.materials.size());
+  MaterialDesc grey;
+  grey.name = "<default>";
+  c.materials.push_back(compile_material(grey, textures));
+
+  auto add_mesh = [&](MeshData m, int material, int object_id) {
+    ScenePiece p;
+    p.kind = ScenePiece::Kind::Mesh;
+    p.mesh = padded(std::move(m));
+    p.material = material;
+    p.object_id = object_id;
+    c.pieces.push_back(std::move(p));
+  };
+  auto add_job = [&](int material, int object_id, ParametricSurface surface, std::shared_ptr<const MeshData> base,
+                     DisplacementFn disp, std::shared_ptr<const bark::BarkSurface> b) {
+    DicingJob j;
+    j.material = material;
+    j.object_id = object_id;
+    j.surface = std::move(surface);
+    j.base = std::move(base);
+    j.disp = std::move(disp);
+    j.bark = std::move(b);
+    c.jobs.push_back(std::move(j));
+  };
+
+  std::map<std::string, int> prototype_of_file;
+  std::map<std::string, std::pair<LoadedModel, int>> models;  // file -> (model, first material index)
+  for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
+    const ObjectDesc& o = desc.objects[oi];
+    const int object_id = int(oi) + 1;
+    const int mat = o.material.empty() ? default_material : desc.find_material(o.material);
+    switch (o.type) {
+      case ObjectType::Sphere: {
+        if (c.materials[mat].emissive()) {  // area lights are triangles
+          add_mesh(sphere_mesh(o.center, o.radius), mat, object_id);
+          break;
+        }
+        ScenePiece p;
+        p.kind = ScenePiece::Kind::Sphere;
+        p.center = o.center;
+        p.radius = o.radius;
+        p.material = mat;
+        p.object_id = object_id;
+        c.pieces.push_back(std::move(p));
+        break;
+      }
+      case ObjectType::Plane:
+        add_mesh(plane_mesh(o), mat, object_id);
+        break;
+      case ObjectType::Tree: {
+        if (o.stress_bark) {
+          c.jobs.push_back(stress_job(desc, o, *bark_of(bark, oi, o).cracked, mat, object_id));
+          break;
+        }
+        const DisplacementFn disp = make_displacement(o.tree.displacement);
+        if (!o.tree.strip_bark) {
+          for (auto& part : build_tree(o.tree, disp)) add_job(mat, object_id, part.surface, nullptr, nullptr, nullptr);
+          break;
+        }
+        // Strip bark: the fracture depth displaces the surface inwards (true geometry) and the
+        // dressed field shades it through the parts' (u, v), kept per vertex.
+        const auto& surfaces = bark_of(bark, oi, o).strip_parts;
+        auto parts = build_tree(o.tree, [&](size_t k) -> DisplacementFn {
+          if (k >= surfaces.size()) return disp;
+          std::shared_ptr<const bark::FieldBarkSurface> b = surfaces[k];
+          return [b, disp](const Vec2f& uv, const Vec3f& p) {
+            bark::SurfacePoint sp;
+            sp.param = Eigen::Vector2d(uv.x(), uv.y() / b->length());
+            sp.position = p;
+            return disp(uv, p) + b->displace(sp).offset;
+          };
+        });
+        for (size_t k = 0; k < parts.size(); ++k) {
+          parts[k].surface.keep_params = true;
+          add_job(mat, object_id, parts[k].surface, nullptr, nullptr, k < surfaces.size() ? surfaces[k] : nullptr);
+        }
+        break;
+      }
+      case ObjectType::Mesh: {
+        if (o.stress_bark) {
+          c.jobs.push_back(stress_job(desc, o, *bark_of(bark, oi, o).cracked, mat, object_id));
+          break;
+        }
+        if (o.procedural) {
+          MeshData w = to_mesh_data(object_trimesh(o));
+          compute_vertex_normals(w);
+          if (o.displacement.type != DisplacementDesc::Type::None)
+            add_job(mat, object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement), nullptr);
+          else
+            add_mesh(std::move(w), mat, object_id);
+          break;
+        }
+        auto it = models.find(o.file);
+        if (it == models.end()) {
+          LoadedModel model = load_mesh_file(o.file);
+          const int first = int(c.materials.size());
+          for (const auto& md : model.materials) c.materials.push_back(compile_material(md, textures));
+          it = models.emplace(o.file, std::make_pair(std::move(model), first)).first;
+        }
+        const LoadedModel& model = it->second.first;
+        const int first_mat = it->second.second;
+        auto resolve = [&](const MeshData& m) {
+          if (!o.material.empty()) return mat;
+          return m.material >= 0 ? first_mat + m.material : default_material;
+        };
+        bool flatten = o.displacement.type != DisplacementDesc::Type::None;
+        for (const auto& m : model.meshes) flatten = flatten || c.materials[resolve(m)].emissive();
+        if (flatten) {  // displaced or emissive: the meshes in world space
+          const Mat3f nrm = o.transform.matrix.topLeftCorner<3, 3>().inverse().transpose();
+          for (const auto& m : model.meshes) {
+            MeshData w = m;
+            for (auto& p : w.positions) p = transform_point(o.transform.matrix, p);
+            for (auto& n : w.normals) n = (nrm * n).normalized();
+            for (auto& t : w.tangents) t.head<3>() = transform_vector(o.transform.matrix, t.head<3>()).normalized();
+            if (w.normals.empty()) compute_vertex_normals(w);
+            if (o.displacement.type != DisplacementDesc::Type::None)
+              add_job(resolve(m), object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement), nullptr);
+            else
+              add_mesh(std::move(w), resolve(m), object_id);
+          }
+          break;
+        }
+        // Instanced: one prototype per file, shared by every object that uses it.
+        auto pit = prototype_of_file.find(o.file);
+        if (pit == prototype_of_file.end()) {
+          MeshPrototype proto;
+          for (const auto& m : model.meshes) {
+            proto.meshes.push_back(padded(m));
+            proto.materials.push_back(m.material >= 0 ? first_mat + m.material : default_material);
+            proto.triangles += m.triangle_count();
+          }
+          c.prototypes.push_back(std::move(proto));
+          pit = prototype_of_file.emplace(o.file, int(c.prototypes.size() - 1)).first;
+        }
+        ScenePiece p;
+        p.kind = ScenePiece::Kind::Instance;
+        p.prototype = pit->second;
+        p.xf = o.transform.matrix;
+        p.material_override = o.material.empty() ? -1 : mat;
+        p.object_id = object_id;
+        c.pieces.push_back(std::move(p));
+        break;
+      }
+    }
+  }
+  return c;
+}
+
+}  // namespace phellem

@@ -1,0 +1,57 @@
+#include "renderer/scene_lights.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/errors.h"
+
+namespace phellem {
+
+std::vector<float> load_environment_image(const LightDesc& l, int* w, int* h) {
+  OIIO::ImageBuf buf(l.file);
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+    throw UserError(l.where.file, l.where.path + "/file", "cannot read environment map " + l.file + ": " + buf.geterror());
+  const auto& spec = buf.spec();
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
+    throw UserError(l.where.file, l.where.path + "/file", "environment map has no pixels");
+  *w = spec.width;
+  *h = spec.height;
+  std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
+  buf.get_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, px.data());
+  std::vector<float> rgb(size_t(spec.width) * spec.height * 3);
+  for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const float v = px[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+      rgb[i * 3 + c] = std::isfinite(v) ? std::max(0.0f, v) : 0.0f;
+    }
+  return rgb;
+}
+
+std::vector<std::unique_ptr<Light>> make_lights(const SceneDesc& desc, std::vector<AreaLights::Triangle> area_triangles) {
+  std::vector<std::unique_ptr<Light>> lights;
+  for (const LightDesc& l : desc.lights) {
+    switch (l.type) {
+      case LightType::EnvironmentUniform:
+        lights.push_back(std::make_unique<UniformEnvironment>(l.color * l.intensity));
+        break;
+      case LightType::EnvironmentMap: {
+        int w, h;
+        auto rgb = load_environment_image(l, &w, &h);
+        lights.push_back(std::make_unique<EnvironmentMap>(std::move(rgb), w, h, l.intensity, l.rotation_deg));
+        break;
+      }
+      case LightType::Sun:
+        lights.push_back(std::make_unique<SunLight>(l.direction, l.irradiance, l.angle_deg, l.color));
+        break;
+      case LightType::Sky:
+        lights.push_back(make_preetham_sky(l.direction, l.turbidity, l.sky_intensity.value_or(1.0f), l.ground_albedo));
+        break;
+    }
+  }
+  if (!area_triangles.empty()) lights.push_back(std::make_unique<AreaLights>(std::move(area_triangles)));
+  return lights;
+}
+
+}  // namespace phellem

@@ -1,0 +1,19 @@
+// Stage 4 of building a RenderScene (lights): the scene's lights (environment, sun, sky) and
+// the emissive triangles gathered while the geometry was attached, as one list.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "renderer/light.h"
+#include "scene/scene_desc.h"
+
+namespace phellem {
+
+// The environment map's pixels as linear RGB (non-finite and negative values become 0).
+std::vector<float> load_environment_image(const LightDesc& l, int* width, int* height);
+
+// The scene's lights in order, then the area lights (if any triangle emits).
+std::vector<std::unique_ptr<Light>> make_lights(const SceneDesc& desc, std::vector<AreaLights::Triangle> area_triangles);
+
+}  // namespace phellem
