@@ -38,8 +38,11 @@ void write_atomically(const std::string& path, const std::function<void(const st
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {
-    fs::remove(tmp, ec);
-    throw UserError(path, "", "cannot write output: " + ec.message());
+    // The reason is the rename's: the removal below must not overwrite it.
+    const std::string why = ec.message();
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw UserError(path, "", "cannot write output: " + why);
   }
 }
 
