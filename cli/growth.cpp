@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/frame_sequence.h"
+#include "cli/outputs.h"
 #include "cli/render_job.h"
 #include "util/errors.h"
 #include "renderer/render_scene.h"
@@ -25,6 +26,8 @@ void scale_radii(std::vector<BranchDesc>& branches, float k) {
 int run_growth(const cli::Options& o) {
   check_view(o);
   check_frame_outputs(o);
+  OutputSet out;
+  expect_outputs(o, out);
   Loaded l = load(o);
   std::vector<std::pair<size_t, std::unique_ptr<TreeStripSimulation>>> sims;
   for (size_t oi = 0; oi < l.desc.objects.size(); ++oi) {
@@ -50,9 +53,10 @@ int run_growth(const cli::Options& o) {
       build.bark[oi] = sim->surfaces();
     }
     RenderScene scene(frame_desc, frame_desc.camera, l.width, l.height, &build);
-    render_frame(o, l, scene, Camera(frame_desc.camera, l.width, l.height), f, frames);
+    render_frame(o, l, scene, Camera(frame_desc.camera, l.width, l.height), f, frames, out);
   }
-  if (!o.mp4.empty()) encode_mp4(o);
+  if (!o.mp4.empty()) encode_mp4(o, out);
+  out.commit();
   return 0;
 }
 
