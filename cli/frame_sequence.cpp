@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cli/outputs.h"
 #include "util/atomic_file.h"
 #include "util/errors.h"
 #include "io/image_output.h"
@@ -37,23 +38,27 @@ std::string frame_name(const std::string& pattern, int frame) {
   return buf.data();
 }
 
-void render_frame(const cli::Options& o, const Loaded& l, const RenderScene& scene, const Camera& camera, int frame, int frames) {
+std::string png_frame_name(const std::string& exr_frame) { return std::filesystem::path(exr_frame).replace_extension(".png").string(); }
+
+void render_frame(const cli::Options& o, const Loaded& l, const RenderScene& scene, const Camera& camera, int frame, int frames,
+                  OutputSet& out) {
   RenderSettings s = l.settings;
   s.progress_label = "frame " + std::to_string(frame + 1) + "/" + std::to_string(frames);
   const RenderResult res = render_image(scene, camera, l.width, l.height, s);
   const std::string exr = frame_name(o.exr, frame);
-  write_exr(res.film, exr);
+  write_exr(res.film, out.stage("-o", exr));
   if (o.png_frames || !o.mp4.empty())
-    write_png(res.film, std::filesystem::path(exr).replace_extension(".png").string(), o.view.empty() ? default_view() : o.view);
+    write_png(res.film, out.stage(png_frames_option(o), png_frame_name(exr)), o.view.empty() ? default_view() : o.view);
 }
 
-void encode_mp4(const cli::Options& o) {
-  const std::string png_pattern = std::filesystem::path(o.exr).replace_extension(".png").string();
-  write_atomically(o.mp4, [&](const std::string& tmp) {
-    const std::string cmd = "ffmpeg -loglevel error -y -framerate 24 -i '" + png_pattern +
-                            "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 '" + tmp + "'";
-    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("ffmpeg failed to encode " + o.mp4);
-  });
+void encode_mp4(const cli::Options& o, OutputSet& out) {
+  // The PNG frames are still temporaries: temp_path_beside() renames only the file name's
+  // stem, so applied to the pattern it gives the pattern of their temporary names.
+  const std::string png_pattern = temp_path_beside(png_frame_name(o.exr));
+  const std::string tmp = out.stage("--mp4", o.mp4);
+  const std::string cmd = "ffmpeg -loglevel error -y -framerate 24 -i '" + png_pattern +
+                          "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 '" + tmp + "'";
+  if (std::system(cmd.c_str()) != 0) throw std::runtime_error("ffmpeg failed to encode " + o.mp4);
 }
 
 }  // namespace phellem

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/frame_sequence.h"
+#include "cli/outputs.h"
 #include "cli/render_job.h"
 #include "util/errors.h"
 #include "renderer/render_scene.h"
@@ -25,6 +26,8 @@ void scale_radii(std::vector<BranchDesc>& branches, float k) {
 int run_growth(const cli::Options& o) {
   check_view(o);
   check_frame_outputs(o);
+  OutputSet out;
+  expect_outputs(o, out);
   Loaded l = load(o);
   std::vector<std::pair<size_t, std::unique_ptr<TreeStripSimulation>>> sims;
   for (size_t oi = 0; oi < l.desc.objects.size(); ++oi) {
@@ -56,9 +59,10 @@ int run_growth(const cli::Options& o) {
       bark.objects[oi].strip_parts = sim->surfaces();
     }
     const auto scene = build_render_scene(frame_desc, bark, frame_desc.camera, l.width, l.height, !o.quiet);
-    render_frame(o, l, *scene, Camera(frame_desc.camera, l.width, l.height), f, frames);
+    render_frame(o, l, *scene, Camera(frame_desc.camera, l.width, l.height), f, frames, out);
   }
-  if (!o.mp4.empty()) encode_mp4(o);
+  if (!o.mp4.empty()) encode_mp4(o, out);
+  out.commit();
   return 0;
 }
 

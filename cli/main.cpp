@@ -8,17 +8,18 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli/frame_sequence.h"
 #include "cli/growth.h"
 #include "cli/options.h"
+#include "cli/outputs.h"
 #include "cli/render_job.h"
 #include "cli/simulate.h"
-#include "util/atomic_file.h"
 #include "util/errors.h"
+#include "util/output_set.h"
+#include "util/temp_files.h"
 #include "io/image_output.h"
 #include "renderer/integrator.h"
 #include "renderer/render_scene.h"
@@ -39,6 +40,8 @@ double peak_rss_mb() {
 
 int run_render(const cli::Options& o) {
   check_view(o);
+  OutputSet out;
+  expect_outputs(o, out);
   const auto t0 = Clock::now();
   Loaded l = load(o);
   const double t_load = since(t0);
@@ -48,9 +51,9 @@ int run_render(const cli::Options& o) {
   const double t_build = since(t1);
   const Camera camera(l.desc.camera, l.width, l.height);
   RenderResult res = render_image(*scene, camera, l.width, l.height, l.settings);
-  const std::string exr = o.exr.empty() && o.png.empty() ? std::string("render.exr") : o.exr;
-  if (!exr.empty()) write_exr(res.film, exr);
-  if (!o.png.empty()) write_png(res.film, o.png, o.view.empty() ? default_view() : o.view);
+  const std::string exr = render_exr_path(o);
+  if (!exr.empty()) write_exr(res.film, out.stage("-o", exr));
+  if (!o.png.empty()) write_png(res.film, out.stage("--png", o.png), o.view.empty() ? default_view() : o.view);
   const double total = since(t0);
   const auto& gs = scene->stats();
   if (!o.quiet)
@@ -75,18 +78,17 @@ int run_render(const cli::Options& o) {
     j["peak_rss_mb"] = peak_rss_mb();
     j["threads"] = l.settings.threads > 0 ? l.settings.threads : int(std::thread::hardware_concurrency());
     j["invalid_samples"] = res.invalid_samples;
-    write_atomically(o.stats, [&](const std::string& tmp) {
-      std::ofstream f(tmp);
-      f << j.dump(2) << "\n";
-      if (!f) throw UserError(o.stats, "", "cannot write stats");
-    });
+    write_json_output(out, "--stats", o.stats, j);
   }
+  out.commit();
   return 0;
 }
 
 int run_turntable(const cli::Options& o) {
   check_view(o);
   check_frame_outputs(o);
+  OutputSet out;
+  expect_outputs(o, out);
   Loaded l = load(o);
   // Geometry is diced once, for the first frame's camera, so it does not crawl.
   const BarkResults bark = simulate_bark(l.desc, !o.quiet);
@@ -95,9 +97,10 @@ int run_turntable(const cli::Options& o) {
   const float degrees = o.degrees.value_or(360.0f);
   for (int f = 0; f < frames; ++f) {
     const Camera camera(Camera::orbit(l.desc.camera, degrees * float(f) / float(frames)), l.width, l.height);
-    render_frame(o, l, *scene, camera, f, frames);
+    render_frame(o, l, *scene, camera, f, frames, out);
   }
-  if (!o.mp4.empty()) encode_mp4(o);
+  if (!o.mp4.empty()) encode_mp4(o, out);
+  out.commit();
   return 0;
 }
 
@@ -107,6 +110,7 @@ int run_turntable(const cli::Options& o) {
 
 int main(int argc, char** argv) {
   using namespace phellem;
+  remove_temp_files_on_termination();
   std::vector<std::string> args(argv + 1, argv + argc);
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
     std::cout << cli::usage();

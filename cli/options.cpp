@@ -54,6 +54,8 @@ Options parse(const std::vector<std::string>& args) {
     const std::string& a = args[i];
     auto value = [&]() -> std::string {
       if (i + 1 >= args.size()) bad(a, "missing value");
+      // An empty value is a mistake (an unset shell variable), not "option not given".
+      if (args[i + 1].empty()) bad(a, "the value is empty");
       return args[++i];
     };
     if (a == "-o" || a == "--output") o.exr = value();
@@ -85,6 +87,7 @@ Options parse(const std::vector<std::string>& args) {
     else if (a == "--quiet" || a == "-q") o.quiet = true;
     else if (a == "--no-mesh" && o.command == "simulate") o.no_mesh = true;
     else if (!a.empty() && a[0] == '-') bad(a, "unknown option for `" + o.command + "`\n" + usage());
+    else if (a.empty()) bad("SCENE", "the scene file name is empty");
     else if (o.scene.empty()) o.scene = a;
     else bad(a, "more than one scene file given");
   }

@@ -5,15 +5,15 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "util/atomic_file.h"
+#include "cli/outputs.h"
+#include "cli/simulate_stress.h"
 #include "util/errors.h"
+#include "util/output_set.h"
 #include "util/progress.h"
 #include "scene/scene_parser.h"
-#include "cli/simulate_stress.h"
 #include "scene/strip_bark_tree.h"
 
 namespace phellem {
@@ -24,8 +24,9 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Multi-channel scene-linear EXR of a FractureField; row 0 of the image is the top of the
-// cylinder (s = length), so the image looks like the bark seen from outside, axis up.
-void write_field(const bark::FractureField& f, const std::string& path) {
+// cylinder (s = length), so the image looks like the bark seen from outside, axis up. Written
+// to `tmp`, the staged temporary of `path`.
+void write_field(const bark::FractureField& f, const std::string& path, const std::string& tmp) {
   const std::vector<std::string> names = {"color.R", "color.G", "color.B", "opening", "depth", "uv0.u", "uv0.v",
                                           "fracture_id", "age", "level", "interior"};
   const int nc = int(names.size());
@@ -38,27 +39,24 @@ void write_field(const bark::FractureField& f, const std::string& path) {
                          f.uv0[2 * p + 1], f.fracture_id[p], f.age[p], f.level[p], f.interior[p]};
       std::copy(v, v + nc, o);
     }
-  write_atomically(path, [&](const std::string& tmp) {
-    OIIO::ImageSpec spec(f.width, f.height, nc, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = names;
-    spec.attribute("compression", "zip");
-    spec.attribute("phellem:length_m", float(f.length));
-    spec.attribute("phellem:circumference_m", float(f.circumference));
-    auto out = OIIO::ImageOutput::create(tmp);
-    if (!out || !out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
-      throw UserError(path, "", "cannot write EXR: " + OIIO::geterror());
-  });
+  OIIO::ImageSpec spec(f.width, f.height, nc, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = names;
+  spec.attribute("compression", "zip");
+  spec.attribute("phellem:length_m", float(f.length));
+  spec.attribute("phellem:circumference_m", float(f.circumference));
+  auto out = OIIO::ImageOutput::create(tmp);
+  if (!out || !out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
+    throw UserError(path, "", "cannot write EXR: " + OIIO::geterror());
 }
 
 }  // namespace
 
 int run_simulate(const cli::Options& o) {
   const auto t0 = Clock::now();
+  OutputSet out;
+  expect_outputs(o, out);
   const SceneDesc desc = load_scene_file(o.scene);
-  std::filesystem::path dir(o.exr);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw UserError(o.exr, "", "cannot create output folder: " + ec.message());
+  const std::filesystem::path dir(o.exr);
   double t_sim = 0, t_dress = 0, t_mesh = 0;
   long long strips = 0, fractures = 0, created = 0, propagated = 0, merged = 0;
   int steps = 0, outputs = 0;
@@ -80,7 +78,7 @@ int run_simulate(const cli::Options& o) {
       const bark::FractureField field = sim.field(k, o.width.value_or(0), o.height.value_or(0));
       bar.advance();
       const std::string file = (dir / (base + "_" + sim.part_name(k) + ".exr")).string();
-      write_field(field, file);
+      write_field(field, file, out.stage("-o", file));
       bar.advance();
       t_dress += since(td);
       const bark::StripModel& model = sim.bark().model(k);
@@ -99,7 +97,7 @@ int run_simulate(const cli::Options& o) {
         const auto tm = Clock::now();
         const GlbMesh mesh = sim.mesh(k);
         const std::string glb = (dir / (base + "_" + sim.part_name(k) + ".glb")).string();
-        write_glb(glb, base + "_" + sim.part_name(k), mesh);
+        write_glb(out.stage("-o", glb), base + "_" + sim.part_name(k), mesh);
         mesh_triangles += (long long)mesh.triangle_count();
         meshes.push_back(glb);
         t_mesh += since(tm);
@@ -109,7 +107,7 @@ int run_simulate(const cli::Options& o) {
     }
     crossings += long(sim.bark().crossings().size());
   }
-  const StressRunTotals stress = simulate_stress_objects(o, desc, dir);
+  const StressRunTotals stress = simulate_stress_objects(o, desc, dir, out);
   if (outputs == 0 && stress.objects == 0)
     throw UserError(o.scene, "objects", "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
   if (!o.stats.empty()) {
@@ -147,12 +145,9 @@ int run_simulate(const cli::Options& o) {
       j["time_s"]["mesh"] = t_mesh;
       if (stress.objects > 0) j["stress_outputs"] = stress.outputs;
     }
-    write_atomically(o.stats, [&](const std::string& tmp) {
-      std::ofstream f(tmp);
-      f << j.dump(2) << "\n";
-      if (!f) throw UserError(o.stats, "", "cannot write stats");
-    });
+    write_json_output(out, "--stats", o.stats, j);
   }
+  out.commit();
   return 0;
 }
 

@@ -1,11 +1,9 @@
 #include "cli/simulate_stress.h"
 
 #include <chrono>
-#include <fstream>
 
-#include "util/atomic_file.h"
+#include "cli/outputs.h"
 #include "io/cracked_mesh_io.h"
-#include "util/errors.h"
 #include "scene/stress_bark_run.h"
 
 namespace phellem {
@@ -15,7 +13,7 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 }  // namespace
 
-StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir) {
+StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir, OutputSet& out) {
   StressRunTotals totals;
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
     const ObjectDesc& obj = desc.objects[oi];
@@ -27,7 +25,7 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
     totals.t_simulate += run.simulate_s;
     const auto tw = Clock::now();
     const std::string glb = (dir / (name + ".glb")).string();
-    write_cracked_glb(glb, name, result);
+    write_cracked_glb(out.stage("-o", glb), name, result);
     const bark::StressStats& st = run.stats;
     const nlohmann::json summary = {{"model", "stress"},
                                     {"object", name},
@@ -43,11 +41,7 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
                                     {"threshold_absolute", run.threshold_absolute},
                                     {"time_s", {{"preprocess", run.preprocess_s}, {"simulate", run.simulate_s}}}};
     const std::string json = (dir / (name + ".json")).string();
-    write_atomically(json, [&](const std::string& tmp) {
-      std::ofstream f(tmp);
-      f << summary.dump(2) << "\n";
-      if (!f) throw UserError(json, "", "cannot write the summary");
-    });
+    write_json_output(out, "-o", json, summary);
     totals.t_write += since(tw);
     ++totals.objects;
     totals.triangles_in += (long long)run.triangles_in;

@@ -8,6 +8,7 @@
 
 #include "cli/options.h"
 #include "scene/scene_desc.h"
+#include "util/output_set.h"
 
 namespace phellem {
 
@@ -19,6 +20,7 @@ struct StressRunTotals {
   nlohmann::json outputs = nlohmann::json::array();
 };
 
-StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir);
+// Runs the stress objects of `desc` and stages their outputs, in folder `dir`, in `out`.
+StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir, OutputSet& out);
 
 }  // namespace phellem

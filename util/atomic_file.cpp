@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "util/errors.h"
+#include "util/temp_files.h"
 
 namespace phellem {
 
@@ -18,16 +19,21 @@ void ensure_parent_dir(const std::string& path) {
   if (ec || !fs::is_directory(parent)) throw UserError(path, "", "cannot create output folder " + parent.string() + ": " + ec.message());
 }
 
-void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
-  ensure_parent_dir(path);
+std::string temp_path_beside(const std::string& path) {
   const fs::path target(path);
-  // Hidden temporary with the same extension: ".NAME.tmpPID.EXT".
   std::string name(1, '.');
   name += target.stem().string();
   name += ".tmp";
   name += std::to_string(getpid());
   name += target.extension().string();
-  const fs::path tmp = target.parent_path() / name;
+  return (target.parent_path() / name).string();
+}
+
+void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+  ensure_parent_dir(path);
+  const fs::path target(path);
+  const fs::path tmp = temp_path_beside(path);
+  const LiveTempFile live(tmp.string());  // removed if a signal ends the process meanwhile
   try {
     write(tmp.string());
   } catch (...) {
@@ -38,8 +44,11 @@ void write_atomically(const std::string& path, const std::function<void(const st
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {
-    fs::remove(tmp, ec);
-    throw UserError(path, "", "cannot write output: " + ec.message());
+    // The reason is the rename's: the removal below must not overwrite it.
+    const std::string why = ec.message();
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw UserError(path, "", "cannot write output: " + why);
   }
 }
 

@@ -11,6 +11,10 @@ namespace phellem {
 // target's extension so format-by-extension writers (OpenImageIO) still work.
 void write_atomically(const std::string& path, const std::function<void(const std::string& tmp)>& write);
 
+// The temporary name write_atomically and OutputSet use for `path`: hidden, beside it, with the
+// process id and the target's extension: DIR/.NAME.tmpPID.EXT.
+std::string temp_path_beside(const std::string& path);
+
 // Ensures the folder of `path` exists; UserError naming the path if it cannot be made.
 void ensure_parent_dir(const std::string& path);
 

@@ -1,9 +1,14 @@
 #pragma once
 #include <string>
+#include <vector>
 namespace phellem::test {
 struct CommandResult { int exit_code; std::string output; };
 // Runs the phellem binary with `args` (shell-quoted by the caller), capturing stderr+stdout.
 CommandResult run_phellem(const std::string& args);
 std::string temp_dir(const std::string& name);
 void write_text(const std::string& path, const std::string& text);
+// The whole file as bytes ("" if it cannot be read).
+std::string read_text(const std::string& path);
+// Files anywhere under `dir` whose name holds ".tmp": temporaries a run left behind.
+std::vector<std::string> leftover_temporaries(const std::string& dir);
 }
