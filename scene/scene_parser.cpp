@@ -289,11 +289,7 @@ DisplacementDesc parse_displacement(JsonObject o) {
   if (auto v = o.get("frequency")) d.frequency = v->positive();
   if (auto v = o.get("sharpness")) d.sharpness = v->positive();
   if (auto v = o.get("waviness")) d.waviness = v->non_negative();
-  if (auto v = o.get("seed")) {
-    const int s = v->integer();
-    if (s < 0) v->fail("must be >= 0");
-    d.seed = static_cast<uint32_t>(s);
-  }
+  if (auto v = o.get("seed")) d.seed = v->seed();
   o.finish();
   return d;
 }
@@ -351,16 +347,12 @@ ProceduralMeshDesc parse_procedural(JsonObject o) {
     p.jitter = v->non_negative();
     if (p.jitter > 0.45f) v->fail("jitter must lie in [0, 0.45] (fraction of the vertex spacing)");
   }
-  if (auto v = o.get("seed")) {
-    const int s = v->integer();
-    if (s < 0) v->fail("seed must be >= 0");
-    p.seed = uint32_t(s);
-  }
+  if (auto v = o.get("seed")) p.seed = v->seed();
   o.finish();
   return p;
 }
 
-TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed, std::shared_ptr<const StressBarkDesc>* stress) {
+TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint64_t seed, std::shared_ptr<const StressBarkDesc>* stress) {
   TreeDesc t;
   auto axis = o.at("axis");
   for (auto& p : axis.array()) t.axis.push_back(p.vec3());
