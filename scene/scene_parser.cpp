@@ -100,19 +100,9 @@ RenderDesc parse_render(JsonObject o) {
     if (r.width < 1 || r.height < 1 || r.width > 32768 || r.height > 32768)
       v->fail("width and height must lie in [1, 32768]");
   }
-  if (auto v = o.get("spp")) {
-    r.spp = v->integer();
-    if (r.spp < 1 || r.spp > 1 << 20) v->fail("must lie in [1, 1048576]");
-  }
-  if (auto v = o.get("max_depth")) {
-    r.max_depth = v->integer();
-    if (r.max_depth < 1 || r.max_depth > 1024) v->fail("must lie in [1, 1024]");
-  }
-  if (auto v = o.get("seed")) {
-    const int s = v->integer();
-    if (s < 0) v->fail("must be >= 0");
-    r.seed = static_cast<uint32_t>(s);
-  }
+  if (auto v = o.get("spp")) r.spp = v->integer(1, 1 << 20);
+  if (auto v = o.get("max_depth")) r.max_depth = v->integer(1, 1024);
+  if (auto v = o.get("seed")) r.seed = v->seed();
   if (auto v = o.get("filter")) r.filter = parse_filter(*v);
   if (auto v = o.get("tessellation")) r.tessellation = parse_tessellation(v->object());
   o.finish();

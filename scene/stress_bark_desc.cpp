@@ -133,6 +133,9 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
       if (l.darkening > 1) w->fail("darkening must lie in [0, 1]");
     }
     if (auto w = m.get("gap")) l.gap = w->non_negative();
+    if (l.min_width > l.max_width)
+      m.fail("min_width", "min_width (" + std::to_string(l.min_width) + " m) must not exceed max_width (" + std::to_string(l.max_width) +
+                              " m" + (m.has("max_width") ? "" : ", the default") + ")");
     m.finish();
   }
   if (auto e = bark::validate(p)) o.fail(o.has(e->key) ? e->key : "", e->key + ": " + e->message);
