@@ -32,7 +32,7 @@ int run_growth(const cli::Options& o) {
     if (obj.type == ObjectType::Tree && obj.tree.strip_bark)
       sims.emplace_back(oi, std::make_unique<TreeStripSimulation>(obj, oi, o.seed));
   }
-  if (sims.empty()) throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
+  if (sims.empty()) throw UserError(o.scene, "/objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
   const int frames = *o.frames;
   for (int f = 0; f < frames; ++f) {
     SceneDesc frame_desc = l.desc;

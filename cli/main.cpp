@@ -79,7 +79,7 @@ int run_render(const cli::Options& o) {
     write_atomically(o.stats, [&](const std::string& tmp) {
       std::ofstream f(tmp);
       f << j.dump(2) << "\n";
-      if (!f) throw UserError(o.stats, "", "cannot write stats");
+      if (!f) throw UserError(o.stats, "--stats", "cannot write stats");
     });
   }
   return 0;

@@ -46,7 +46,7 @@ void write_field(const bark::FractureField& f, const std::string& path) {
     spec.attribute("phellem:circumference_m", float(f.circumference));
     auto out = OIIO::ImageOutput::create(tmp);
     if (!out || !out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
-      throw UserError(path, "", "cannot write EXR: " + OIIO::geterror());
+      throw UserError(path, "-o", "cannot write EXR into the output folder: " + OIIO::geterror());
   });
 }
 
@@ -58,7 +58,7 @@ int run_simulate(const cli::Options& o) {
   std::filesystem::path dir(o.exr);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw UserError(o.exr, "", "cannot create output folder: " + ec.message());
+  if (ec || !std::filesystem::is_directory(dir)) throw UserError(o.exr, "-o", "cannot create output folder: " + ec.message());
   double t_sim = 0, t_dress = 0, t_mesh = 0;
   long long strips = 0, fractures = 0, created = 0, propagated = 0, merged = 0;
   int steps = 0, outputs = 0;
@@ -111,7 +111,7 @@ int run_simulate(const cli::Options& o) {
   }
   const StressRunTotals stress = simulate_stress_objects(o, desc, dir);
   if (outputs == 0 && stress.objects == 0)
-    throw UserError(o.scene, "objects", "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
+    throw UserError(o.scene, "/objects", "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
   if (!o.stats.empty()) {
     nlohmann::json j;
     if (stress.objects > 0) {
@@ -150,7 +150,7 @@ int run_simulate(const cli::Options& o) {
     write_atomically(o.stats, [&](const std::string& tmp) {
       std::ofstream f(tmp);
       f << j.dump(2) << "\n";
-      if (!f) throw UserError(o.stats, "", "cannot write stats");
+      if (!f) throw UserError(o.stats, "--stats", "cannot write stats");
     });
   }
   return 0;

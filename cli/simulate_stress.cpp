@@ -46,7 +46,7 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
     write_atomically(json, [&](const std::string& tmp) {
       std::ofstream f(tmp);
       f << summary.dump(2) << "\n";
-      if (!f) throw UserError(json, "", "cannot write the summary");
+      if (!f) throw UserError(json, "-o", "cannot write the summary into the output folder");
     });
     totals.t_write += since(tw);
     ++totals.objects;

@@ -1,5 +1,7 @@
 #include "scene/scene_parser.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -471,7 +473,7 @@ SceneDesc parse_scene(const std::string& text, const std::string& file, const fs
 
 SceneDesc load_scene_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError(path, "", "cannot open scene file");
+  if (!in) throw UserError(path, "open", std::string("cannot open scene file: ") + std::strerror(errno));
   std::stringstream ss;
   ss << in.rdbuf();
   fs::path base = fs::absolute(fs::path(path)).parent_path();

@@ -15,7 +15,7 @@ void ensure_parent_dir(const std::string& path) {
   if (parent.empty()) return;
   std::error_code ec;
   fs::create_directories(parent, ec);
-  if (ec || !fs::is_directory(parent)) throw UserError(path, "", "cannot create output folder " + parent.string() + ": " + ec.message());
+  if (ec || !fs::is_directory(parent)) throw UserError(path, "output folder", "cannot create " + parent.string() + ": " + (ec ? ec.message() : "a file of that name is in the way"));
 }
 
 void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
@@ -38,8 +38,9 @@ void write_atomically(const std::string& path, const std::function<void(const st
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {
+    const std::string why = ec.message();  // before remove() overwrites ec
     fs::remove(tmp, ec);
-    throw UserError(path, "", "cannot write output: " + ec.message());
+    throw UserError(path, "rename", "cannot move the written file into place: " + why);
   }
 }
 
