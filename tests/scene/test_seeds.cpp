@@ -7,6 +7,7 @@
 
 #include "scene/scene_parser.h"
 #include "util/errors.h"
+#include "util/hash.h"
 
 namespace phellem {
 namespace {
@@ -83,6 +84,15 @@ TEST(Seeds, FractionsNegativesAndTooLargeAreRefusedWithTheRange) {
     EXPECT_NE(msg.find("scene.json: " + c.path + ": "), std::string::npos) << c.json << "\n" << msg;
     EXPECT_NE(msg.find(kRange), std::string::npos) << c.json << "\n" << msg;
   }
+}
+
+TEST(Seeds, FoldSeedIsTheIdentityBelow2To32) {
+  // What keeps every existing scene's output bit-identical: 32-bit consumers see the same seed.
+  for (uint64_t s : {0ull, 1ull, 7ull, 123456789ull, 2147483647ull, 2147483648ull, 4294967295ull}) EXPECT_EQ(fold_seed(s), uint32_t(s)) << s;
+  // Above, the high half counts: 2^32 + 5 is not 5, and seeds differing only there differ.
+  EXPECT_NE(fold_seed(4294967296ull + 5), 5u);
+  EXPECT_NE(fold_seed(4294967296ull + 5), fold_seed(2 * 4294967296ull + 5));
+  EXPECT_NE(fold_seed(18446744073709551615ull), 4294967295u);
 }
 
 }  // namespace
