@@ -1,6 +1,7 @@
 #include "scene/stress_bark_desc.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "bark/stress/stress_presets.h"
 #include "scene/json_reader.h"
@@ -133,9 +134,12 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
       if (l.darkening > 1) w->fail("darkening must lie in [0, 1]");
     }
     if (auto w = m.get("gap")) l.gap = w->non_negative();
-    if (l.min_width > l.max_width)
-      m.fail("min_width", "min_width (" + std::to_string(l.min_width) + " m) must not exceed max_width (" + std::to_string(l.max_width) +
-                              " m" + (m.has("max_width") ? "" : ", the default") + ")");
+    if (l.min_width > l.max_width) {
+      char what[160];
+      std::snprintf(what, sizeof what, "min_width (%g m) must not exceed max_width (%g m%s)", l.min_width, l.max_width,
+                    m.has("max_width") ? "" : ", the default");
+      m.fail("min_width", what);
+    }
     m.finish();
   }
   if (auto e = bark::validate(p)) o.fail(o.has(e->key) ? e->key : "", e->key + ": " + e->message);
