@@ -35,7 +35,7 @@ int run_growth(const cli::Options& o) {
     if (obj.type == ObjectType::Tree && obj.tree.strip_bark)
       sims.emplace_back(oi, std::make_unique<TreeStripSimulation>(obj, oi, o.seed));
   }
-  if (sims.empty()) throw UserError(o.scene, "objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
+  if (sims.empty()) throw UserError(o.scene, "/objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
   // Bark that does not grow with the frames (stress bark) is simulated once.
   BarkResults still;
   for (size_t oi = 0; oi < l.desc.objects.size(); ++oi) {

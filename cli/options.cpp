@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstdint>
 
 #include "util/errors.h"
 
@@ -17,6 +19,28 @@ long long integer(const std::string& opt, const std::string& v, long long lo, lo
   if (ec != std::errc() || p != v.data() + v.size()) bad(opt, "expected an integer, got \"" + v + "\"");
   if (x < lo || x > hi) bad(opt, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v);
   return x;
+}
+
+// A seed: any unsigned 64-bit integer, in decimal, read exactly (as in the scene).
+uint64_t seed(const std::string& opt, const std::string& v) {
+  uint64_t x = 0;
+  auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (v.empty() || ec != std::errc() || p != v.data() + v.size())
+    bad(opt, "must be an integer in [0, 18446744073709551615], got \"" + v + "\"");
+  return x;
+}
+
+// An angle in degrees: a finite number in [-kMaxDegrees, kMaxDegrees]. NaN and infinities
+// would reach the camera, and from it Embree's ray validity assertion.
+constexpr double kMaxDegrees = 1e6;
+float degrees(const std::string& opt, const std::string& v) {
+  const std::string range = "must be a number in [-1000000, 1000000]";
+  double x = 0;
+  auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (v.empty() || p != v.data() + v.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+    bad(opt, range + ", got \"" + v + "\"");
+  if (ec == std::errc::result_out_of_range || !std::isfinite(x) || std::abs(x) > kMaxDegrees) bad(opt, range + ", got " + v);
+  return float(x);
 }
 
 // Output names are checked before any work: a wrong extension found only when the file is
@@ -39,13 +63,17 @@ std::string usage() {
          "                 [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
          "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--no-mesh] [--threads N] [--quiet]\n"
          "  phellem --help | --version\n"
+         "Ranges: --spp N in [1, 1048576] (render.spp), --seed S in [0, 18446744073709551615]\n"
+         "(render.seed), --res WxH each in [1, 32768], --threads N in [1, 1024], --frames N in\n"
+         "[1, 100000], --degrees D in [-1000000, 1000000] (default 360). render.max_depth, only in\n"
+         "the scene, lies in [1, 1024].\n"
          "Without SCENE.json, `render` renders the embedded default scene. See README.md and\n"
          "docs/scene-format.md.\n";
 }
 
 Options parse(const std::vector<std::string>& args) {
   Options o;
-  if (args.empty()) bad("", "no command given\n" + usage());
+  if (args.empty()) bad("command", "no command given\n" + usage());
   o.command = args[0];
   if (o.command != "render" && o.command != "turntable" && o.command != "growth" && o.command != "simulate")
     bad(o.command, "unknown command; allowed: render, turntable, growth, simulate\n" + usage());
@@ -67,17 +95,9 @@ Options parse(const std::vector<std::string>& args) {
     else if (a == "--spp") o.spp = int(integer(a, value(), 1, 1 << 20));
     else if (a == "--threads") o.threads = int(integer(a, value(), 1, 1024));
     else if (a == "--frames" && frames) o.frames = int(integer(a, value(), 1, 100000));
-    else if (a == "--seed") o.seed = uint32_t(integer(a, value(), 0, 0xFFFFFFFFLL));
-    else if (a == "--degrees" && o.command == "turntable") {
-      const std::string v = value();
-      try {
-        size_t used = 0;
-        o.degrees = std::stof(v, &used);
-        if (used != v.size()) throw std::invalid_argument(v);
-      } catch (const std::exception&) {
-        bad(a, "expected a number, got \"" + v + "\"");
-      }
-    } else if (a == "--res") {
+    else if (a == "--seed") o.seed = seed(a, value());
+    else if (a == "--degrees" && o.command == "turntable") o.degrees = degrees(a, value());
+    else if (a == "--res") {
       const std::string v = value();
       const auto x = v.find('x');
       if (x == std::string::npos) bad(a, "expected WxH, e.g. 1920x1080, got \"" + v + "\"");

@@ -1,6 +1,7 @@
 // Command-line parsing for `phellem`: strict, every mistake is a UserError (exit 2).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,7 +14,7 @@ struct Options {
   std::string exr, png, stats, mp4;
   bool png_frames = false;  // turntable --png
   std::optional<int> spp, threads, frames, width, height;
-  std::optional<uint32_t> seed;
+  std::optional<uint64_t> seed;
   std::optional<float> degrees;
   std::string view;
   bool quiet = false;

@@ -46,7 +46,7 @@ void write_field(const bark::FractureField& f, const std::string& path, const st
   spec.attribute("phellem:circumference_m", float(f.circumference));
   auto out = OIIO::ImageOutput::create(tmp);
   if (!out || !out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
-    throw UserError(path, "", "cannot write EXR: " + OIIO::geterror());
+    throw UserError(path, "-o", "cannot write EXR: " + OIIO::geterror());
 }
 
 }  // namespace
@@ -109,7 +109,7 @@ int run_simulate(const cli::Options& o) {
   }
   const StressRunTotals stress = simulate_stress_objects(o, desc, dir, out);
   if (outputs == 0 && stress.objects == 0)
-    throw UserError(o.scene, "objects", "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
+    throw UserError(o.scene, "/objects", "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
   if (!o.stats.empty()) {
     nlohmann::json j;
     if (stress.objects > 0) {

@@ -176,7 +176,7 @@ LoadedModel load_gltf(const std::string& path) {
     for (size_t n = 0; n < model.nodes.size(); ++n)
       if (!is_child[n]) visit_node(int(n), Mat4f::Identity(), 0);
   }
-  if (out.meshes.empty()) rd.fail("", "the file contains no triangle geometry");
+  if (out.meshes.empty()) rd.fail("meshes", "the file contains no triangle geometry");
   return out;
 }
 

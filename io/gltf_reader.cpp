@@ -26,11 +26,11 @@ tinygltf::Model open_gltf(const std::string& path) {
   try {
     ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path) : loader.LoadASCIIFromFile(&model, &err, &warn, path);
   } catch (const std::exception& e) {
-    throw UserError(path, "", std::string("invalid glTF: ") + e.what());
+    throw UserError(path, "read", std::string("invalid glTF: ") + e.what());
   }
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    throw UserError(path, "", "invalid glTF: " + (err.empty() ? std::string("unreadable file") : err));
+    throw UserError(path, "read", "invalid glTF: " + (err.empty() ? std::string("unreadable file") : err));
   }
   return model;
 }

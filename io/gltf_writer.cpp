@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <stdexcept>
 
@@ -106,7 +107,11 @@ void write_glb(const std::string& path, const std::string& mesh_name, const GlbM
   model.defaultScene = 0;
   write_atomically(path, [&](const std::string& tmp) {
     tinygltf::TinyGLTF gltf;
-    if (!gltf.WriteGltfSceneToFile(&model, tmp, false, true, false, true)) throw UserError(path, "", "cannot write glTF binary");
+    // tinygltf reports success even when it could not open the file: check that it is there.
+    std::error_code ec;
+    if (!gltf.WriteGltfSceneToFile(&model, tmp, false, true, false, true) || !std::filesystem::is_regular_file(tmp, ec) ||
+        std::filesystem::file_size(tmp, ec) == 0)
+      throw UserError(path, "write", "cannot write glTF binary");
   });
 }
 

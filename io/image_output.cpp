@@ -57,10 +57,10 @@ void write_exr(const Film& f, const std::string& path) {
   }
   write_atomically(path, [&](const std::string& tmp) {
     auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw UserError(path, "", "cannot create EXR writer: " + OIIO::geterror());
-    if (!out->open(tmp, spec)) throw UserError(path, "", "cannot open for writing: " + out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, px.data())) throw UserError(path, "", "write failed: " + out->geterror());
-    if (!out->close()) throw UserError(path, "", "close failed: " + out->geterror());
+    if (!out) throw UserError(path, "create", "cannot create EXR writer: " + OIIO::geterror());
+    if (!out->open(tmp, spec)) throw UserError(path, "open", "cannot open for writing: " + out->geterror());
+    if (!out->write_image(OIIO::TypeDesc::FLOAT, px.data())) throw UserError(path, "write", "write failed: " + out->geterror());
+    if (!out->close()) throw UserError(path, "close", "close failed: " + out->geterror());
   });
 }
 
@@ -126,10 +126,10 @@ void write_png(const Film& f, const std::string& path, const std::string& view) 
   spec.attribute("Software", "Phellem (OCIO view: " + view + ")");
   write_atomically(path, [&](const std::string& tmp) {
     auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw UserError(path, "", "cannot create PNG writer: " + OIIO::geterror());
-    if (!out->open(tmp, spec)) throw UserError(path, "", "cannot open for writing: " + out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::UINT8, px.data())) throw UserError(path, "", "write failed: " + out->geterror());
-    if (!out->close()) throw UserError(path, "", "close failed: " + out->geterror());
+    if (!out) throw UserError(path, "create", "cannot create PNG writer: " + OIIO::geterror());
+    if (!out->open(tmp, spec)) throw UserError(path, "open", "cannot open for writing: " + out->geterror());
+    if (!out->write_image(OIIO::TypeDesc::UINT8, px.data())) throw UserError(path, "write", "write failed: " + out->geterror());
+    if (!out->close()) throw UserError(path, "close", "close failed: " + out->geterror());
   });
 }
 

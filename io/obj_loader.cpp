@@ -15,7 +15,7 @@ LoadedModel load_obj(const std::string& path) {
   if (!reader.ParseFromFile(path, cfg)) {
     std::string e = reader.Error();
     while (!e.empty() && e.back() == '\n') e.pop_back();
-    throw UserError(path, "", "invalid OBJ: " + (e.empty() ? std::string("unreadable file") : e));
+    throw UserError(path, "read", "invalid OBJ: " + (e.empty() ? std::string("unreadable file") : e));
   }
   const auto& attrib = reader.GetAttrib();
   LoadedModel out;
@@ -62,7 +62,7 @@ LoadedModel load_obj(const std::string& path) {
     compute_tangents(md);
     if (!md.indices.empty()) out.meshes.push_back(std::move(md));
   }
-  if (out.meshes.empty()) throw UserError(path, "", "the file contains no faces");
+  if (out.meshes.empty()) throw UserError(path, "faces", "the file contains no faces");
   return out;
 }
 

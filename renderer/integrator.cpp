@@ -10,6 +10,7 @@
 #include "renderer/pixel_filter.h"
 #include "util/progress.h"
 #include "renderer/sampler.h"
+#include "util/hash.h"
 
 namespace phellem {
 
@@ -170,6 +171,7 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
   Progress progress(s.progress_label, (long long)tiles_x * tiles_y, s.progress);
   const auto start = std::chrono::steady_clock::now();
 
+  const uint32_t seed = fold_seed(s.seed);
   auto render_tile = [&](int tile) {
     const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
     long long tile_rays = 0, tile_invalid = 0;
@@ -179,7 +181,7 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
         Vec3f normal = Vec3f::Zero(), position = Vec3f::Zero();
         float depth = 0, coverage = 0, crack_mask = 0, crack_depth = 0;
         int object_id = 0;
-        const uint32_t pixel_seed = Sampler::hash_pixel(uint32_t(x), uint32_t(y), s.seed);
+        const uint32_t pixel_seed = Sampler::hash_pixel(uint32_t(x), uint32_t(y), seed);
         for (int i = 0; i < s.spp; ++i) {
           Sampler sampler(pixel_seed, uint32_t(i));
           const Vec4f cam = sampler.get4d();

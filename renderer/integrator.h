@@ -11,7 +11,7 @@ namespace phellem {
 struct RenderSettings {
   int spp = 16;
   int max_depth = 8;
-  uint32_t seed = 0;
+  uint64_t seed = 0;  // folded to the sampler's 32 bits by fold_seed (identity below 2^32)
   FilterDesc filter;
   int threads = 0;          // 0: all cores
   bool progress = false;

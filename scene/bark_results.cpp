@@ -5,6 +5,7 @@
 
 #include "scene/strip_bark_tree.h"
 #include "scene/stress_bark_run.h"
+#include "util/hash.h"
 
 namespace phellem {
 
@@ -35,7 +36,7 @@ BarkResults simulate_bark(const SceneDesc& desc, bool progress) {
 }
 
 std::shared_ptr<const bark::CrackBarkSurface> crack_surface(const ObjectDesc& o, const bark::CrackedMesh& cracked) {
-  return std::make_shared<const bark::CrackBarkSurface>(cracked, o.stress_bark->look, uint32_t(o.stress_bark->params.seed));
+  return std::make_shared<const bark::CrackBarkSurface>(cracked, o.stress_bark->look, fold_seed(o.stress_bark->params.seed));
 }
 
 }  // namespace phellem

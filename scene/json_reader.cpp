@@ -1,16 +1,102 @@
 #include "scene/json_reader.h"
 
+#include <charconv>
 #include <cmath>
 
 namespace phellem {
 
 namespace {
+
 std::string type_name(const nlohmann::json& j) { return j.type_name(); }
+
+// The largest magnitude a scene number may have: it must fit a float (FLT_MAX ≈ 3.4028e38).
+constexpr double kMaxNumber = 3.4e38;
+const char* kNumberRange = "valid range [-3.4e38, 3.4e38]";
+
+// A number as a person would write it: shortest round-trip form, exponent without '+' or
+// leading zeros (1e300, not 1e+300).
+std::string format_number(double d) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, d);
+  std::string s(buf, r.ptr);
+  const auto e = s.find('e');
+  if (e == std::string::npos) return s;
+  std::string mantissa = s.substr(0, e), exponent = s.substr(e + 1);
+  std::string sign;
+  if (!exponent.empty() && (exponent[0] == '+' || exponent[0] == '-')) {
+    if (exponent[0] == '-') sign = "-";
+    exponent.erase(0, 1);
+  }
+  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+  return mantissa + "e" + sign + exponent;
+}
+
+// What a value is, for "found ..." in a message: the number itself, or its type.
+std::string found(const nlohmann::json& j) {
+  if (j.is_number_unsigned()) return std::to_string(j.get<uint64_t>());
+  if (j.is_number_integer()) return std::to_string(j.get<int64_t>());
+  if (j.is_number_float()) return format_number(j.get<double>());
+  return type_name(j);
+}
+
+// Follows the JSON path of the value being parsed through the parser's callback events, so
+// that errors the parser itself raises (duplicate keys, numbers that overflow a double) can
+// name it. Each open object remembers its keys; each open array counts its elements.
+class PathTracker {
+ public:
+  explicit PathTracker(std::string file) : file_(std::move(file)) {}
+
+  bool event(nlohmann::json::parse_event_t e, const nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    switch (e) {
+      case E::object_start: frames_.push_back({false, {}, {}, 0}); break;
+      case E::array_start: frames_.push_back({true, {}, {}, 0}); break;
+      case E::key: {
+        Frame& f = frames_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second)
+          throw UserError(file_, path(), "duplicate key \"" + f.key + "\" (each key may appear once in an object)");
+        break;
+      }
+      case E::object_end:
+      case E::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case E::value: element_done(); break;
+    }
+    return true;
+  }
+
+  // The JSON path of the value being parsed: "/camera/fov_deg", "/objects/1/center/2".
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_) p += "/" + (f.array ? std::to_string(f.index) : f.key);
+    return p;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::string key;
+    std::set<std::string> keys;
+    size_t index;
+  };
+  void element_done() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+  std::string file_;
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  PathTracker tracker(file);
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, [&tracker](int, nlohmann::json::parse_event_t e, nlohmann::json& parsed) {
+      return tracker.event(e, parsed);
+    });
   } catch (const nlohmann::json::parse_error& e) {
     // Convert the byte offset into line:column, which is what an editor shows.
     size_t line = 1, col = 1;
@@ -28,12 +114,16 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
     if (pos != std::string::npos) msg = msg.substr(pos);
     throw UserError(file, "line " + std::to_string(line) + ", column " + std::to_string(col),
                     "invalid JSON: " + msg);
-  } catch (const nlohmann::json::exception& e) {
-    // e.g. out_of_range 406: a literal such as 1e999 that overflows to infinity.
-    std::string msg = e.what();
+  } catch (const nlohmann::json::out_of_range& e) {
+    // 406: a literal such as 1e999 that overflows a double; the tracker knows whose it is.
+    std::string msg = e.what(), literal;
+    const auto q = msg.find('\'');
+    if (e.id == 406 && q != std::string::npos) literal = msg.substr(q + 1, msg.rfind('\'') - q - 1);
+    if (!literal.empty())
+      throw UserError(file, tracker.path().empty() ? "/" : tracker.path(), "number out of range: " + literal + "; " + kNumberRange);
     const auto pos = msg.find(']');
     if (pos != std::string::npos) msg = msg.substr(pos + 2);
-    throw UserError(file, "", "invalid JSON: " + msg + " (numbers must be finite)");
+    throw UserError(file, tracker.path().empty() ? "/" : tracker.path(), "invalid JSON: " + msg);
   }
 }
 
@@ -97,13 +187,13 @@ void JsonObject::finish() const {
 }
 
 void JsonObject::fail(const std::string& key, const std::string& what) const {
-  throw UserError(file_, key.empty() ? path_ : path_ + "/" + key, what);
+  throw UserError(file_, key.empty() ? (path_.empty() ? "/" : path_) : path_ + "/" + key, what);
 }
 
 float JsonValue::number() const {
   if (!j_->is_number()) fail("expected a number, found " + type_name(*j_));
   const double d = j_->get<double>();
-  if (!std::isfinite(d) || std::abs(d) > 3.0e38) fail("number is not finite");
+  if (!std::isfinite(d) || std::abs(d) > kMaxNumber) fail("number out of range: " + found(*j_) + "; " + kNumberRange);
   return static_cast<float>(d);
 }
 float JsonValue::positive() const {
@@ -118,9 +208,30 @@ float JsonValue::non_negative() const {
 }
 int JsonValue::integer() const {
   if (!j_->is_number_integer()) fail("expected an integer, found " + type_name(*j_));
-  const auto v = j_->get<int64_t>();
-  if (v < -(1LL << 31) || v > (1LL << 31) - 1) fail("integer out of range");
-  return static_cast<int>(v);
+  const bool fits = j_->is_number_unsigned() ? j_->get<uint64_t>() <= uint64_t(INT32_MAX)
+                                             : j_->get<int64_t>() >= INT32_MIN && j_->get<int64_t>() <= INT32_MAX;
+  if (!fits) fail("integer out of range: " + found(*j_) + "; valid range [-2147483648, 2147483647]");
+  return static_cast<int>(j_->get<int64_t>());
+}
+int JsonValue::integer(int lo, int hi) const {
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (!j_->is_number_integer()) fail("must be an integer in " + range + ", found " + found(*j_));
+  bool fits;
+  if (j_->is_number_unsigned()) {
+    const uint64_t u = j_->get<uint64_t>();
+    fits = hi >= 0 && u <= uint64_t(hi) && (lo <= 0 || u >= uint64_t(lo));
+  } else {
+    const int64_t v = j_->get<int64_t>();
+    fits = v >= lo && v <= hi;
+  }
+  if (!fits) fail("must be an integer in " + range + ", found " + found(*j_));
+  return static_cast<int>(j_->get<int64_t>());
+}
+uint64_t JsonValue::seed() const {
+  // Exactly as written: an integer literal (nlohmann keeps 0..2^64-1 as uint64); negatives,
+  // fractions, exponents and anything larger arrive as other types and are refused.
+  if (!j_->is_number_unsigned()) fail("seed must be an integer in " + std::string(kSeedRange) + ", found " + found(*j_));
+  return j_->get<uint64_t>();
 }
 bool JsonValue::boolean() const {
   if (!j_->is_boolean()) fail("expected true or false, found " + type_name(*j_));

@@ -13,7 +13,11 @@
 
 namespace phellem {
 
-// Parses text into JSON, turning syntax errors into UserError with line and column.
+// The one range of every seed, in scenes and on the command line.
+inline constexpr const char* kSeedRange = "[0, 18446744073709551615]";
+
+// Parses text into JSON, turning syntax errors into UserError with line and column, and
+// refusing duplicate keys and numbers that overflow a double at their JSON paths.
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 
 class JsonValue;
@@ -58,7 +62,9 @@ class JsonValue {
   float number() const;
   float positive() const;      // > 0
   float non_negative() const;  // >= 0
-  int integer() const;
+  int integer() const;                // a 32-bit signed integer
+  int integer(int lo, int hi) const;  // an integer in [lo, hi]; the message states the range
+  uint64_t seed() const;              // an integer in [0, 2^64 - 1], read exactly (kSeedRange)
   bool boolean() const;
   std::string string() const;
   Vec2f vec2() const;

@@ -14,7 +14,7 @@
 namespace phellem {
 
 bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
-  const uint32_t seed = p.seed;
+  const uint64_t seed = p.seed;
   const double n = std::max(20, p.triangles);
   if (p.shape == "trunk" || p.shape == "vase") {
     // Quads about square: along / around ≈ height / circumference.

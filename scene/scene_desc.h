@@ -47,7 +47,7 @@ struct RenderDesc {
   int width = 960, height = 540;
   int spp = 64;
   int max_depth = 8;
-  uint32_t seed = 0;
+  uint64_t seed = 0;  // [0, 2^64 - 1]
   FilterDesc filter;
   TessellationDesc tessellation;
 };
@@ -76,7 +76,7 @@ struct DisplacementDesc {
   float frequency = 12.0f; // grooves around the circumference / noise cycles per metre
   float sharpness = 3.0f;  // grooves: ridge sharpness
   float waviness = 0.3f;   // grooves: lateral wander of the furrows
-  uint32_t seed = 1;
+  uint64_t seed = 1;  // folded to the noise's 32 bits (fold_seed)
 };
 
 struct TransformDesc {
@@ -112,7 +112,7 @@ struct ProceduralMeshDesc {
   float height = 1.0f;      // trunk, vase, sheet (and its width)
   float tube = 0.06f;       // torus knot
   float jitter = 0.3f;      // trunk, vase, sheet: vertex jitter (fraction of the spacing)
-  uint32_t seed = 1;        // of the jitter
+  uint64_t seed = 1;        // of the jitter
 };
 
 enum class ObjectType { Sphere, Plane, Mesh, Tree };

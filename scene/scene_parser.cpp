@@ -1,5 +1,7 @@
 #include "scene/scene_parser.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -100,19 +102,9 @@ RenderDesc parse_render(JsonObject o) {
     if (r.width < 1 || r.height < 1 || r.width > 32768 || r.height > 32768)
       v->fail("width and height must lie in [1, 32768]");
   }
-  if (auto v = o.get("spp")) {
-    r.spp = v->integer();
-    if (r.spp < 1 || r.spp > 1 << 20) v->fail("must lie in [1, 1048576]");
-  }
-  if (auto v = o.get("max_depth")) {
-    r.max_depth = v->integer();
-    if (r.max_depth < 1 || r.max_depth > 1024) v->fail("must lie in [1, 1024]");
-  }
-  if (auto v = o.get("seed")) {
-    const int s = v->integer();
-    if (s < 0) v->fail("must be >= 0");
-    r.seed = static_cast<uint32_t>(s);
-  }
+  if (auto v = o.get("spp")) r.spp = v->integer(1, 1 << 20);
+  if (auto v = o.get("max_depth")) r.max_depth = v->integer(1, 1024);
+  if (auto v = o.get("seed")) r.seed = v->seed();
   if (auto v = o.get("filter")) r.filter = parse_filter(*v);
   if (auto v = o.get("tessellation")) r.tessellation = parse_tessellation(v->object());
   o.finish();
@@ -289,11 +281,7 @@ DisplacementDesc parse_displacement(JsonObject o) {
   if (auto v = o.get("frequency")) d.frequency = v->positive();
   if (auto v = o.get("sharpness")) d.sharpness = v->positive();
   if (auto v = o.get("waviness")) d.waviness = v->non_negative();
-  if (auto v = o.get("seed")) {
-    const int s = v->integer();
-    if (s < 0) v->fail("must be >= 0");
-    d.seed = static_cast<uint32_t>(s);
-  }
+  if (auto v = o.get("seed")) d.seed = v->seed();
   o.finish();
   return d;
 }
@@ -351,16 +339,12 @@ ProceduralMeshDesc parse_procedural(JsonObject o) {
     p.jitter = v->non_negative();
     if (p.jitter > 0.45f) v->fail("jitter must lie in [0, 0.45] (fraction of the vertex spacing)");
   }
-  if (auto v = o.get("seed")) {
-    const int s = v->integer();
-    if (s < 0) v->fail("seed must be >= 0");
-    p.seed = uint32_t(s);
-  }
+  if (auto v = o.get("seed")) p.seed = v->seed();
   o.finish();
   return p;
 }
 
-TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint32_t seed, std::shared_ptr<const StressBarkDesc>* stress) {
+TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint64_t seed, std::shared_ptr<const StressBarkDesc>* stress) {
   TreeDesc t;
   auto axis = o.at("axis");
   for (auto& p : axis.array()) t.axis.push_back(p.vec3());
@@ -489,7 +473,7 @@ SceneDesc parse_scene(const std::string& text, const std::string& file, const fs
 
 SceneDesc load_scene_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError(path, "", "cannot open scene file");
+  if (!in) throw UserError(path, "open", std::string("cannot open scene file: ") + std::strerror(errno));
   std::stringstream ss;
   ss << in.rdbuf();
   fs::path base = fs::absolute(fs::path(path)).parent_path();

@@ -1,6 +1,7 @@
 #include "scene/stress_bark_desc.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "bark/stress/stress_presets.h"
 #include "scene/json_reader.h"
@@ -56,7 +57,7 @@ bark::StressStroke read_stroke(JsonObject o) {
 
 }  // namespace
 
-StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint32_t default_seed) {
+StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint64_t default_seed) {
   StressBarkDesc d;
   const std::string model = o.string("model");
   if (model != "stress") o.fail("model", "unknown bark model \"" + model + "\"; allowed: strips, stress");
@@ -102,11 +103,7 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
     p.growth_increment << g.x(), g.z(), g.z(), g.y();
   }
   if (auto v = o.get("curvature_stress")) p.curvature_stress = v->number();
-  if (auto v = o.get("seed")) {
-    const double s = v->number();
-    if (s < 0 || s > 4294967295.0 || s != std::floor(s)) v->fail("seed must be an integer in [0, 4294967295]");
-    p.seed = uint64_t(s);
-  }
+  if (auto v = o.get("seed")) p.seed = v->seed();
   if (auto v = o.get("preprocess")) {
     if (v->is_bool()) {
       d.preprocess.enabled = v->boolean();
@@ -137,6 +134,12 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
       if (l.darkening > 1) w->fail("darkening must lie in [0, 1]");
     }
     if (auto w = m.get("gap")) l.gap = w->non_negative();
+    if (l.min_width > l.max_width) {
+      char what[160];
+      std::snprintf(what, sizeof what, "min_width (%g m) must not exceed max_width (%g m%s)", l.min_width, l.max_width,
+                    m.has("max_width") ? "" : ", the default");
+      m.fail("min_width", what);
+    }
     m.finish();
   }
   if (auto e = bark::validate(p)) o.fail(o.has(e->key) ? e->key : "", e->key + ": " + e->message);

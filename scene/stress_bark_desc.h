@@ -28,6 +28,6 @@ struct StressBarkDesc {
 
 // Parses and validates (every StressParamError is reported at its JSON path). `base_dir`
 // resolves the stress image's file name.
-StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint32_t default_seed);
+StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint64_t default_seed);
 
 }  // namespace phellem

@@ -14,7 +14,7 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 }  // namespace
 
-StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint32_t> seed, bool progress) {
+StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint64_t> seed, bool progress) {
   const ObjectDesc& obj = desc.objects.at(oi);
   if (!obj.stress_bark) throw std::logic_error("run_stress_object: the object has no stress bark");
   const std::string where = "/objects/" + std::to_string(oi);

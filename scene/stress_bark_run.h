@@ -22,6 +22,6 @@ struct StressRun {
   double preprocess_s = 0, simulate_s = 0;
 };
 
-StressRun run_stress_object(const SceneDesc& desc, size_t object_index, std::optional<uint32_t> seed, bool progress);
+StressRun run_stress_object(const SceneDesc& desc, size_t object_index, std::optional<uint64_t> seed, bool progress);
 
 }  // namespace phellem

@@ -63,7 +63,7 @@ bark::ColorSample read_sample(JsonObject o, const std::string& base_dir, bark::C
 
 }  // namespace
 
-StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint32_t default_seed) {
+StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint64_t default_seed) {
   StripBarkDesc d;
   const std::string model = o.string("model");
   if (model != "strips") o.fail("model", "unknown bark model \"" + model + "\"; allowed: strips");
@@ -142,11 +142,7 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint32
       f.finish();
       p.scripted.push_back(sf);
     }
-  if (auto v = o.get("seed")) {
-    const double s = v->number();
-    if (s < 0 || s > 4294967295.0 || s != std::floor(s)) v->fail("seed must be an integer in [0, 4294967295]");
-    p.seed = uint64_t(s);
-  }
+  if (auto v = o.get("seed")) p.seed = v->seed();
   if (auto v = o.get("field_resolution")) {
     const Vec2f r = v->vec2();
     if (r.x() < 8 || r.y() < 8 || r.x() > 16384 || r.y() > 16384 || r.x() != std::floor(r.x()) || r.y() != std::floor(r.y()))

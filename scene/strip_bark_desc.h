@@ -22,6 +22,6 @@ struct StripBarkDesc {
 
 // Parses and validates (every StripParamError is reported at its JSON path). `base_dir`
 // resolves the weakness map's file name.
-StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint32_t default_seed);
+StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint64_t default_seed);
 
 }  // namespace phellem

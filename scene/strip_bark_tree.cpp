@@ -10,7 +10,7 @@
 
 namespace phellem {
 
-TreeStripSimulation::TreeStripSimulation(const ObjectDesc& obj, size_t oi, std::optional<uint32_t> seed)
+TreeStripSimulation::TreeStripSimulation(const ObjectDesc& obj, size_t oi, std::optional<uint64_t> seed)
     : desc_(obj.tree.strip_bark) {
   if (!desc_) throw std::logic_error("TreeStripSimulation: the tree has no strip bark");
   parts_ = build_tree(obj.tree, [](const Vec2f&, const Vec3f&) { return 0.0f; });

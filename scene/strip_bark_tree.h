@@ -24,7 +24,7 @@ class TreeStripSimulation {
  public:
   // Builds the models. A parameter the built surface cannot take is a UserError at
   // /objects/<index>/bark/<key>. `seed` overrides the scene's.
-  TreeStripSimulation(const ObjectDesc& tree, size_t object_index, std::optional<uint32_t> seed = {});
+  TreeStripSimulation(const ObjectDesc& tree, size_t object_index, std::optional<uint64_t> seed = {});
 
   // Grows until `step` (clamped to the total), showing progress when asked. The models advance
   // by blocks of bark::kBlockSteps, so the bark then shows the end of the block `step` falls

@@ -16,7 +16,7 @@ void ensure_parent_dir(const std::string& path) {
   if (parent.empty()) return;
   std::error_code ec;
   fs::create_directories(parent, ec);
-  if (ec || !fs::is_directory(parent)) throw UserError(path, "", "cannot create output folder " + parent.string() + ": " + ec.message());
+  if (ec || !fs::is_directory(parent)) throw UserError(path, "output folder", "cannot create " + parent.string() + ": " + (ec ? ec.message() : "a file of that name is in the way"));
 }
 
 std::string temp_path_beside(const std::string& path) {
@@ -48,7 +48,7 @@ void write_atomically(const std::string& path, const std::function<void(const st
     const std::string why = ec.message();
     std::error_code ignored;
     fs::remove(tmp, ignored);
-    throw UserError(path, "", "cannot write output: " + why);
+    throw UserError(path, "rename", "cannot move the written file into place: " + why);
   }
 }
 

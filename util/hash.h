@@ -32,6 +32,14 @@ inline uint64_t mix64(uint64_t z) {  // splitmix64 finalizer
   return z ^ (z >> 31);
 }
 
+// A 64-bit seed for code that draws from 32-bit seeds (noise, the pixel sampler, crack
+// profiles): the identity below 2^32, so a seed < 2^32 gives the same numbers it always gave;
+// above, the high half is hashed into the low one (hash_u32(0) == 0, which keeps the identity).
+inline uint32_t fold_seed(uint64_t seed) {
+  const uint32_t high = uint32_t(seed >> 32);
+  return uint32_t(seed) ^ (high == 0 ? 0u : hash_u32(high));
+}
+
 // Uniform float in [0, 1) from the top 24 bits.
 inline float u32_to_unit_float(uint32_t x) { return float(x >> 8) * 0x1p-24f; }
 

@@ -29,15 +29,15 @@ TEST(SceneErrors, UnknownKeyNamesItsPath) {
 }
 
 TEST(SceneErrors, WrongTypes) {
-  EXPECT_NE(error_of(R"({"render": {"spp": "many"}})").find("/render/spp: expected an integer, found string"), std::string::npos);
+  EXPECT_NE(error_of(R"({"render": {"spp": "many"}})").find("/render/spp: must be an integer in [1, 1048576], found string"), std::string::npos);
   EXPECT_NE(error_of(R"({"camera": {"position": [1, 2]}})").find("/camera/position: expected 3 numbers"), std::string::npos);
   EXPECT_NE(error_of(R"({"objects": {}})").find("/objects: expected an array"), std::string::npos);
 }
 
 TEST(SceneErrors, NegativeAndNonFiniteNumbers) {
   EXPECT_NE(error_of(R"({"objects": [{"type": "sphere", "radius": -1}]})").find("/objects/0/radius: must be > 0"), std::string::npos);
-  // JSON has no NaN; an overflowing literal parses to infinity and is refused.
-  EXPECT_NE(error_of(R"({"camera": {"fov_deg": 1e999}})").find("numbers must be finite"), std::string::npos);
+  // JSON has no NaN; a literal that overflows a double is refused at its path with the range.
+  EXPECT_NE(error_of(R"({"camera": {"fov_deg": 1e999}})").find("/camera/fov_deg: number out of range: 1e999"), std::string::npos);
   EXPECT_NE(error_of(R"({"lights": [{"type": "sun", "direction": [0, 1, 0], "irradiance": -2}]})").find("/lights/0/irradiance: must be >= 0"), std::string::npos);
 }
 
