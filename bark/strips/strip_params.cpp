@@ -82,6 +82,22 @@ std::optional<StripParamError> validate(const StripParams& p) {
       << p.growth_rate << " allows at most " << most << " steps";
     return err("steps", m.str());
   }
+  // Dilatation bulges raise the growth exponent to at most 1 + the sum of their positive
+  // amounts where they overlap: the same bound holds there.
+  double bulges = 0;
+  for (const auto& b : p.dilatation) {
+    if (!std::isfinite(b.amount) || !(b.amount > -1)) return err("dilatation", "amounts must be finite and > -1");
+    bulges += std::max(0.0, b.amount);
+  }
+  if (p.steps * std::log(p.growth_rate) * (1.0 + bulges) > std::log(kMaxStripGrowth)) {
+    std::ostringstream m;
+    m.precision(4);
+    m << "bulge amounts summing to " << bulges << " raise the growth at their centre to growth_rate^(steps x (1 + "
+      << bulges << ")) = 1e+" << p.steps * std::log10(p.growth_rate) * (1.0 + bulges) << ", more than " << kMaxStripGrowth
+      << "; with growth_rate " << p.growth_rate << " and " << p.steps << " steps the amounts may sum to at most "
+      << std::log(kMaxStripGrowth) / (p.steps * std::log(p.growth_rate)) - 1.0;
+    return err("dilatation", m.str());
+  }
   if (p.fracture_stiffness.empty()) return err("fracture_stiffness", "needs at least one value");
   for (size_t i = 0; i < p.fracture_stiffness.size(); ++i) {
     const auto& c = p.fracture_stiffness[i];

@@ -1,7 +1,8 @@
 // Strip bark starts growth_rate^steps times smaller than the scene's tree (the shrinking
 // strategy, Lefebvre & Neyret 2002 sec. 5.2). A growth that overflows (1.5^2000) used to
 // crash StripModel::init_strip; it is now refused at the JSON path of `steps` with the
-// number of steps the given growth_rate allows, and that many steps run.
+// number of steps the given growth_rate allows, and that many steps run. Dilatation bulges,
+// which raise the growth where they sit, are bounded the same way.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -33,6 +34,18 @@ TEST(StripGrowthCli, OverflowingGrowthIsRefusedAtSteps) {
   test::write_text(scene, scene_with_bark(R"({"model": "strips", "growth_rate": 1.5, "steps": 34})"));
   const auto at = test::run_phellem_limited("simulate " + scene + " -o " + dir + "/out", 8192, 300);
   EXPECT_EQ(at.exit_code, 0) << at.output;
+}
+
+TEST(StripGrowthCli, DilatationThatOverflowsTheGrowthIsRefused) {
+  // A bulge multiplies the growth exponent by 1 + amount at its centre: 1.01^(60 x 100001).
+  const std::string dir = test::temp_dir("strip_growth_bulge");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, scene_with_bark(R"({"model": "strips", "growth_rate": 1.01, "steps": 60,
+      "dilatation": [{"s": 0.1, "theta_deg": 0, "amount": 100000}]})"));
+  const auto r = test::run_phellem_limited("simulate " + scene + " -o " + dir + "/out", 8192, 120);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("phellem: error: " + scene + ": /objects/0/bark/dilatation: ", 0), 0u) << r.output;
+  EXPECT_NE(r.output.find("the amounts may sum to at most 22.1"), std::string::npos) << r.output;
 }
 
 TEST(StripGrowthCli, StepsAllowedByAGrowthRate) {
