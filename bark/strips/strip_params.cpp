@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace phellem::bark {
@@ -90,13 +91,13 @@ std::optional<StripParamError> validate(const StripParams& p) {
     bulges += std::max(0.0, b.amount);
   }
   if (p.steps * std::log(p.growth_rate) * (1.0 + bulges) > std::log(kMaxStripGrowth)) {
-    std::ostringstream m;
-    m.precision(4);
-    m << "bulge amounts summing to " << bulges << " raise the growth at their centre to growth_rate^(steps x (1 + "
-      << bulges << ")) = 1e+" << p.steps * std::log10(p.growth_rate) * (1.0 + bulges) << ", more than " << kMaxStripGrowth
-      << "; with growth_rate " << p.growth_rate << " and " << p.steps << " steps the amounts may sum to at most "
-      << std::log(kMaxStripGrowth) / (p.steps * std::log(p.growth_rate)) - 1.0;
-    return err("dilatation", m.str());
+    char m[400];
+    std::snprintf(m, sizeof m,
+                  "bulge amounts summing to %g raise the growth at their centre to growth_rate^(steps x (1 + %g)) = "
+                  "10^%.1f, more than %g; with growth_rate %g and %d steps the amounts may sum to at most %.2f",
+                  bulges, bulges, p.steps * std::log10(p.growth_rate) * (1.0 + bulges), kMaxStripGrowth, p.growth_rate,
+                  p.steps, std::floor(100 * (std::log(kMaxStripGrowth) / (p.steps * std::log(p.growth_rate)) - 1.0)) / 100);
+    return err("dilatation", m);
   }
   if (p.fracture_stiffness.empty()) return err("fracture_stiffness", "needs at least one value");
   for (size_t i = 0; i < p.fracture_stiffness.size(); ++i) {
