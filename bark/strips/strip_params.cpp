@@ -87,7 +87,7 @@ std::optional<StripParamError> validate(const StripParams& p) {
   // amounts where they overlap: the same bound holds there.
   double bulges = 0;
   for (const auto& b : p.dilatation) {
-    if (!std::isfinite(b.amount) || !(b.amount > -1)) return err("dilatation", "amounts must be finite and > -1");
+    if (!std::isfinite(b.amount)) return err("dilatation", "amounts must be finite");
     bulges += std::max(0.0, b.amount);
   }
   if (p.steps * std::log(p.growth_rate) * (1.0 + bulges) > std::log(kMaxStripGrowth)) {
