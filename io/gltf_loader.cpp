@@ -15,7 +15,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Mat4f node_matrix(const tinygltf::Node& n) {
+// The node's local transform: `matrix` (16 numbers, column-major) or translation (3),
+// rotation (4, a quaternion x y z w) and scale (3). Any other count is an error, not identity.
+Mat4f node_matrix(const tinygltf::Node& n, const GltfReader& rd, const std::string& where) {
+  auto check = [&](const std::vector<double>& v, size_t count, const char* key) {
+    if (v.empty()) return;
+    if (v.size() != count)
+      rd.fail(where + "." + key, "must have " + std::to_string(count) + " numbers, has " + std::to_string(v.size()));
+    for (double x : v)
+      if (!std::isfinite(x) || std::abs(x) > 3.4e38) rd.fail(where + "." + key, "numbers must be finite floats");
+  };
+  check(n.matrix, 16, "matrix");
+  check(n.translation, 3, "translation");
+  check(n.rotation, 4, "rotation");
+  check(n.scale, 3, "scale");
   Mat4f m = Mat4f::Identity();
   if (n.matrix.size() == 16) {
     for (int c = 0; c < 4; ++c)
@@ -116,7 +129,7 @@ LoadedModel load_gltf(const std::string& path) {
     if (ni < 0 || size_t(ni) >= model.nodes.size()) rd.fail("nodes", "node index " + std::to_string(ni) + " out of range");
     if (depth > 64) rd.fail("nodes[" + std::to_string(ni) + "]", "node hierarchy deeper than 64 (cycle?)");
     const tinygltf::Node& node = model.nodes[ni];
-    const Mat4f world = parent * node_matrix(node);
+    const Mat4f world = parent * node_matrix(node, rd, "nodes[" + std::to_string(ni) + "]");
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model.meshes.size()) rd.fail("nodes[" + std::to_string(ni) + "].mesh", "mesh index " + std::to_string(node.mesh) + " out of range");
       const tinygltf::Mesh& mesh = model.meshes[node.mesh];

@@ -28,8 +28,9 @@ class GltfReader {
     const tinygltf::Accessor& a = accessor(index, where);
     const int nc = tinygltf::GetNumComponentsInType(a.type);
     if (nc != comps) fail(where, "accessor " + std::to_string(index) + " has " + std::to_string(nc) + " components, expected " + std::to_string(comps));
+    const Layout l = layout(a, index, where);  // bounds checked before anything is allocated
     std::vector<float> out(a.count * comps);
-    visit(a, index, where, [&](size_t i, int c, const unsigned char* p) {
+    visit(a, l, [&](size_t i, int c, const unsigned char* p) {
       float v;
       switch (a.componentType) {
         case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&v, p, 4); break;
@@ -48,8 +49,9 @@ class GltfReader {
   std::vector<uint32_t> indices(int index, const std::string& where) const {
     const tinygltf::Accessor& a = accessor(index, where);
     if (a.type != TINYGLTF_TYPE_SCALAR) fail(where, "index accessor must be SCALAR");
+    const Layout l = layout(a, index, where);  // bounds checked before anything is allocated
     std::vector<uint32_t> out(a.count);
-    visit(a, index, where, [&](size_t i, int, const unsigned char* p) {
+    visit(a, l, [&](size_t i, int, const unsigned char* p) {
       switch (a.componentType) {
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = *p; break;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t s; std::memcpy(&s, p, 2); out[i] = s; break; }
@@ -60,6 +62,46 @@ class GltfReader {
     return out;
   }
 
+  // Where accessor `index`'s elements lie, every byte of them checked to be inside its
+  // bufferView and buffer (without overflow, whatever the counts and offsets). Errors name
+  // the glTF element at fault (e.g. "accessors[2].count") and, after "read as", the element
+  // `where` that refers to the accessor (empty: none).
+  struct Layout {
+    const unsigned char* base = nullptr;
+    size_t stride = 0, comp_size = 0;
+    int components = 0;
+  };
+  Layout layout(const tinygltf::Accessor& a, int index, const std::string& where) const {
+    const std::string acc = "accessors[" + std::to_string(index) + "]";
+    const std::string use = where.empty() ? std::string() : " (read as " + where + ")";
+    if (a.sparse.isSparse) fail(acc + ".sparse", "sparse accessors are not supported" + use);
+    if (a.bufferView < 0 || size_t(a.bufferView) >= m_.bufferViews.size())
+      fail(acc + ".bufferView", "bufferView index " + std::to_string(a.bufferView) + " out of range (file has " + std::to_string(m_.bufferViews.size()) + " bufferViews)" + use);
+    const std::string view = "bufferViews[" + std::to_string(a.bufferView) + "]";
+    const tinygltf::BufferView& bv = m_.bufferViews[a.bufferView];
+    if (bv.buffer < 0 || size_t(bv.buffer) >= m_.buffers.size())
+      fail(view + ".buffer", "buffer index " + std::to_string(bv.buffer) + " out of range (file has " + std::to_string(m_.buffers.size()) + " buffers)" + use);
+    const tinygltf::Buffer& buf = m_.buffers[bv.buffer];
+    const int comp_size = tinygltf::GetComponentSizeInBytes(a.componentType);
+    const int nc = tinygltf::GetNumComponentsInType(a.type);
+    if (comp_size <= 0) fail(acc + ".componentType", "invalid componentType " + std::to_string(a.componentType) + use);
+    if (nc <= 0) fail(acc + ".type", "invalid type" + use);
+    const size_t elem = size_t(comp_size) * nc;
+    const size_t stride = bv.byteStride ? bv.byteStride : elem;
+    if (stride < elem) fail(view + ".byteStride", "byteStride " + std::to_string(bv.byteStride) + " is smaller than one element of " + acc + " (" + std::to_string(elem) + " bytes)" + use);
+    const size_t size = buf.data.size();
+    if (bv.byteOffset > size || bv.byteLength > size - bv.byteOffset)
+      fail(view, "reaches byte " + std::to_string(bv.byteOffset) + " + " + std::to_string(bv.byteLength) + " but buffers[" + std::to_string(bv.buffer) + "] holds " + std::to_string(size) + " bytes (truncated or missing buffer?)" + use);
+    if (a.byteOffset > bv.byteLength)
+      fail(acc + ".byteOffset", "byteOffset " + std::to_string(a.byteOffset) + " is beyond the end of " + view + " (" + std::to_string(bv.byteLength) + " bytes)" + use);
+    // count elements: (count - 1) strides and one element after byteOffset, within the view.
+    const size_t room = bv.byteLength - a.byteOffset;
+    const size_t max_count = room < elem ? 0 : (room - elem) / stride + 1;
+    if (a.count > max_count)
+      fail(acc + ".count", "count " + std::to_string(a.count) + " of " + std::to_string(elem) + "-byte elements (stride " + std::to_string(stride) + ") after byteOffset " + std::to_string(a.byteOffset) + " overruns " + view + " (" + std::to_string(bv.byteLength) + " bytes: room for " + std::to_string(max_count) + ")" + use);
+    return {buf.data.data() + bv.byteOffset + a.byteOffset, stride, size_t(comp_size), nc};
+  }
+
  private:
   const tinygltf::Accessor& accessor(int index, const std::string& where) const {
     if (index < 0 || size_t(index) >= m_.accessors.size())
@@ -68,29 +110,9 @@ class GltfReader {
   }
 
   template <typename F>
-  void visit(const tinygltf::Accessor& a, int index, const std::string& where, F&& f) const {
-    const std::string acc = "accessors[" + std::to_string(index) + "]";
-    if (a.sparse.isSparse) fail(where, acc + " is sparse; sparse accessors are not supported");
-    if (a.bufferView < 0 || size_t(a.bufferView) >= m_.bufferViews.size())
-      fail(where, acc + ".bufferView " + std::to_string(a.bufferView) + " out of range");
-    const tinygltf::BufferView& bv = m_.bufferViews[a.bufferView];
-    if (bv.buffer < 0 || size_t(bv.buffer) >= m_.buffers.size())
-      fail(where, "bufferViews[" + std::to_string(a.bufferView) + "].buffer " + std::to_string(bv.buffer) + " out of range");
-    const tinygltf::Buffer& buf = m_.buffers[bv.buffer];
-    const int comp_size = tinygltf::GetComponentSizeInBytes(a.componentType);
-    const int nc = tinygltf::GetNumComponentsInType(a.type);
-    if (comp_size <= 0 || nc <= 0) fail(where, acc + " has an invalid componentType or type");
-    const size_t elem = size_t(comp_size) * nc;
-    const size_t stride = bv.byteStride ? bv.byteStride : elem;
-    if (stride < elem) fail(where, "bufferViews[" + std::to_string(a.bufferView) + "].byteStride is smaller than one element");
-    const size_t view_end = bv.byteOffset + bv.byteLength;
-    if (view_end > buf.data.size())
-      fail(where, "bufferViews[" + std::to_string(a.bufferView) + "] reaches byte " + std::to_string(view_end) + " but buffers[" + std::to_string(bv.buffer) + "] holds " + std::to_string(buf.data.size()) + " bytes (truncated or missing buffer?)");
-    if (a.count > 0 && a.byteOffset + (a.count - 1) * stride + elem > bv.byteLength)
-      fail(where, acc + " (" + std::to_string(a.count) + " elements) overruns bufferViews[" + std::to_string(a.bufferView) + "]");
-    const unsigned char* base = buf.data.data() + bv.byteOffset + a.byteOffset;
+  void visit(const tinygltf::Accessor& a, const Layout& l, F&& f) const {
     for (size_t i = 0; i < a.count; ++i)
-      for (int c = 0; c < nc; ++c) f(i, c, base + i * stride + size_t(c) * comp_size);
+      for (int c = 0; c < l.components; ++c) f(i, c, l.base + i * l.stride + size_t(c) * l.comp_size);
   }
 
   const tinygltf::Model& m_;

@@ -1,13 +1,124 @@
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <string_view>
 
 #include "util/errors.h"
 #include "io/mesh_io.h"
 
 namespace phellem {
 
+namespace {
+
+// An OBJ index field: optional sign and decimal digits, saturated far beyond any count (so
+// 4294967299 stays 4294967299 instead of wrapping to 3 as atoi does in tinyobjloader).
+bool parse_index(std::string_view text, int64_t* out) {
+  size_t i = 0;
+  const bool negative = !text.empty() && text[0] == '-';
+  if (!text.empty() && (text[0] == '-' || text[0] == '+')) ++i;
+  if (i == text.size()) return false;
+  int64_t v = 0;
+  for (; i < text.size(); ++i) {
+    if (text[i] < '0' || text[i] > '9') return false;
+    v = std::min<int64_t>(v * 10 + (text[i] - '0'), int64_t(1) << 62);
+  }
+  *out = negative ? -v : v;
+  return true;
+}
+
+// Checks every index of the face (f), line (l) and point (p) statements against the
+// positions (v), texture coordinates (vt) and normals (vn) defined before that line, as
+// OBJ defines them (1-based, negative = relative to the last one defined), before
+// tinyobjloader converts them: it parses indices with atoi (a huge index wraps to a valid
+// one) and drops out-of-range texture coordinate and normal indices without a word.
+// Lines end at \n, \r\n or \r, as in tinyobjloader, so the line numbers agree.
+void check_obj_indices(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UserError(path, "open", "cannot open OBJ file");
+  std::streambuf* sb = in.rdbuf();
+  int64_t counts[3] = {0, 0, 0};  // v, vt, vn
+  static const char* kinds[3] = {"vertex", "texture coordinate", "normal"};
+  static const char* keys[3] = {"v", "vt", "vn"};
+  std::string line;
+  size_t line_num = 0;
+  bool more = true;
+  while (more) {
+    line.clear();
+    for (;;) {
+      const int c = sb->sbumpc();
+      if (c == std::char_traits<char>::eof()) {
+        more = false;
+        break;
+      }
+      if (c == '\n') break;
+      if (c == '\r') {
+        if (sb->sgetc() == '\n') sb->sbumpc();
+        break;
+      }
+      line.push_back(char(c));
+    }
+    if (!more && line.empty()) break;
+    ++line_num;
+    std::string_view t(line);
+    const size_t start = t.find_first_not_of(" \t");
+    if (start == std::string_view::npos) continue;
+    t.remove_prefix(start);
+    auto statement = [&](std::string_view key) {
+      return t.size() > key.size() && t.substr(0, key.size()) == key && (t[key.size()] == ' ' || t[key.size()] == '\t');
+    };
+    if (statement("v")) { ++counts[0]; continue; }
+    if (statement("vt")) { ++counts[1]; continue; }
+    if (statement("vn")) { ++counts[2]; continue; }
+    if (!statement("f") && !statement("l") && !statement("p")) continue;
+    const char statement_key = t[0];
+    t.remove_prefix(2);
+    const std::string where = "line " + std::to_string(line_num);
+    while (!t.empty()) {
+      const size_t b = t.find_first_not_of(" \t");
+      if (b == std::string_view::npos) break;
+      t.remove_prefix(b);
+      const size_t e = std::min(t.find_first_of(" \t"), t.size());
+      const std::string_view token = t.substr(0, e);
+      t.remove_prefix(e);
+      // v, v/vt, v//vn or v/vt/vn
+      std::string_view fields[3];
+      size_t nf = 0;
+      for (std::string_view rest = token;; ++nf) {
+        const size_t slash = rest.find('/');
+        if (nf == 3 || (slash != std::string_view::npos && nf == 2))
+          throw UserError(path, where, std::string("'") + statement_key + "' element \"" + printable(token) + "\" has more than three indices (v/vt/vn)");
+        fields[nf] = rest.substr(0, slash);
+        if (slash == std::string_view::npos) {
+          ++nf;
+          break;
+        }
+        rest.remove_prefix(slash + 1);
+      }
+      for (size_t k = 0; k < nf; ++k) {
+        if (k == 1 && fields[k].empty() && nf == 3) continue;  // v//vn
+        int64_t idx = 0;
+        if (!parse_index(fields[k], &idx))
+          throw UserError(path, where, std::string("'") + statement_key + "' element \"" + printable(token) + "\": " +
+                                           kinds[k] + " index \"" + printable(fields[k]) + "\" is not an integer");
+        const int64_t n = counts[k];
+        if (idx == 0 || idx > n || -idx > n)
+          throw UserError(path, where, std::string("'") + statement_key + "' element \"" + printable(token) + "\": " +
+                                           kinds[k] + " index " + std::to_string(idx) + " is out of range: " +
+                                           std::to_string(n) + " " + keys[k] + " line" + (n == 1 ? "" : "s") +
+                                           " before it (indices run from 1 to " + std::to_string(n) +
+                                           ", or from -1 back to -" + std::to_string(n) + ")");
+      }
+    }
+  }
+}
+
+}  // namespace
+
 LoadedModel load_obj(const std::string& path) {
+  check_obj_indices(path);
   tinyobj::ObjReaderConfig cfg;
   cfg.triangulate = true;
   cfg.mtl_search_path = std::filesystem::path(path).parent_path().string();

@@ -5,11 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/image_limits.h"
 #include "util/errors.h"
 
 namespace phellem {
 
 std::vector<float> load_environment_image(const LightDesc& l, int* w, int* h) {
+  std::string why;
+  if (!read_image_header(l.file, &why))  // bounds the size before anything is decoded
+    throw UserError(l.where.file, l.where.path + "/file", "cannot read environment map " + l.file + ": " + why);
   OIIO::ImageBuf buf(l.file);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
     throw UserError(l.where.file, l.where.path + "/file", "cannot read environment map " + l.file + ": " + buf.geterror());

@@ -11,6 +11,7 @@
 #include "util/cache_dir.h"
 #include "util/errors.h"
 #include "util/hash.h"
+#include "io/image_limits.h"
 #include "io/image_output.h"
 #include "util/noise.h"
 
@@ -32,6 +33,12 @@ struct Entry {
 
 // Converts `src` to a linear, tiled, mip-mapped .tx (once; keyed by path, size, mtime).
 std::string make_tx(const TextureDesc& d, const Location& where) {
+  // The header alone decides whether the image may be decoded (io/image_limits.h): OIIO's
+  // texture set-up crashes on a header that claims 100000 x 100000 pixels.
+  std::string why;
+  const std::optional<OIIO::ImageSpec> header = read_image_header(d.file, &why);
+  if (!header) throw UserError(where.file, where.path, why);
+  const OIIO::ImageSpec& spec = *header;
   std::error_code ec;
   const auto size = fs::file_size(d.file, ec);
   if (ec) throw UserError(where.file, where.path, "cannot read texture " + d.file);
@@ -45,10 +52,6 @@ std::string make_tx(const TextureDesc& d, const Location& where) {
   const fs::path out = fs::path(texture_cache_dir()) / name;
   if (fs::exists(out)) return out.string();
 
-  auto in = OIIO::ImageInput::open(d.file);
-  if (!in) throw UserError(where.file, where.path, "cannot read image " + d.file + ": " + OIIO::geterror());
-  const OIIO::ImageSpec spec = in->spec();
-  in->close();
   const bool eight_bit = spec.format == OIIO::TypeDesc::UINT8;
   OIIO::ImageSpec config;
   config.attribute("maketx:filtername", "lanczos3");

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "io/image_limits.h"
 #include "scene/json_reader.h"
 
 namespace phellem {
@@ -15,13 +16,16 @@ SceneImage read_scene_image(const JsonValue& v, const std::string& base_dir) {
   auto in = OIIO::ImageInput::open(p.string());
   if (!in) v.fail("cannot read image " + p.string() + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  // The header alone decides whether the pixels may be decoded (io/image_limits.h).
+  if (auto why = image_size_problem(spec.width, spec.height, spec.depth, spec.nchannels))
+    v.fail("cannot read image " + p.string() + ": " + *why);
   SceneImage img;
   img.path = p.string();
   img.width = spec.width;
   img.height = spec.height;
   img.channels = spec.nchannels;
   img.encoded = spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
-  img.pixels.resize(size_t(spec.width) * spec.height * spec.nchannels);
+  img.pixels.resize(size_t(spec.width) * spec.height * spec.depth * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
     v.fail("cannot read image " + p.string() + ": " + in->geterror());
   return img;

@@ -1,5 +1,7 @@
 #include "scene/scene_parser.h"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -472,12 +474,37 @@ SceneDesc parse_scene(const std::string& text, const std::string& file, const fs
 }
 
 SceneDesc load_scene_file(const std::string& path) {
+  // Only a regular file of at most kMaxSceneFileBytes is read: /dev/zero, a FIFO or a folder
+  // would never end (or end in an allocation failure) otherwise. stat follows symbolic links.
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0)
+    throw UserError(path, "open", std::string("cannot open scene file: ") + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw UserError(path, "open", "is a folder, not a scene file");
+  if (!S_ISREG(st.st_mode))
+    throw UserError(path, "open", std::string("is not a regular file (") +
+                                  (S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISCHR(st.st_mode) ? "a character device"
+                                                                   : S_ISBLK(st.st_mode) ? "a block device"
+                                                                   : S_ISSOCK(st.st_mode) ? "a socket" : "not a file") +
+                                  "); a scene is read from a regular file");
+  if (uint64_t(st.st_size) > kMaxSceneFileBytes)
+    throw UserError(path, "size", "the scene file is " + std::to_string(uint64_t(st.st_size)) + " bytes; at most " +
+                                  std::to_string(kMaxSceneFileBytes) + " (64 MiB) are read (meshes and images belong in their own files)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(path, "open", std::string("cannot open scene file: ") + std::strerror(errno));
-  std::stringstream ss;
-  ss << in.rdbuf();
+  // Read at most one byte past the limit: a file that grew since stat is refused too.
+  std::string text(size_t(st.st_size), '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(size_t(in.gcount()));
+  if (in.bad()) throw UserError(path, "read", "cannot read scene file");
+  if (text.size() == size_t(st.st_size) && in.peek() != std::char_traits<char>::eof()) {
+    std::string more(kMaxSceneFileBytes + 1 - text.size(), '\0');
+    in.read(more.data(), std::streamsize(more.size()));
+    text.append(more.data(), size_t(in.gcount()));
+    if (text.size() > kMaxSceneFileBytes)
+      throw UserError(path, "read", "the scene file grew past " + std::to_string(kMaxSceneFileBytes) + " bytes while it was read");
+  }
   fs::path base = fs::absolute(fs::path(path)).parent_path();
-  return parse_scene(ss.str(), path, base);
+  return parse_scene(text, path, base);
 }
 
 SceneDesc default_scene() { return parse_scene(default_scene_text(), "<default scene>", fs::current_path()); }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace phellem::bark {
@@ -48,6 +49,15 @@ ThresholdRange valid_threshold_range(const StripParams& p, double softest_epider
   return r;
 }
 
+int max_steps_for_growth(double growth_rate) {
+  if (!(growth_rate > 1.0)) return 1000000;
+  // The largest n with growth_rate^n <= kMaxStripGrowth, exact at the boundary.
+  int n = int(std::floor(std::log(kMaxStripGrowth) / std::log(growth_rate)));
+  while (n > 0 && std::pow(growth_rate, n) > kMaxStripGrowth) --n;
+  while (std::pow(growth_rate, n + 1) <= kMaxStripGrowth) ++n;
+  return std::min(n, 1000000);
+}
+
 std::optional<StripParamError> validate(const StripParams& p) {
   auto err = [](std::string key, std::string msg) { return StripParamError{std::move(key), std::move(msg)}; };
   auto positive = [&](const char* key, double v) -> std::optional<StripParamError> {
@@ -61,6 +71,34 @@ std::optional<StripParamError> validate(const StripParams& p) {
   if (p.steps < 1 || p.steps > 1000000) return err("steps", "must be an integer in [1, 1000000]");
   if (!(p.growth_rate > 1.0) || !(p.growth_rate < 2.0))
     return err("growth_rate", "must be in (1, 2): relative circumference growth per step");
+  // The bark starts growth_rate^steps times smaller than the scene's tree (sec. 5.2); past
+  // kMaxStripGrowth its first elements would be far below any length the model resolves.
+  if (const int most = max_steps_for_growth(p.growth_rate); p.steps > most) {
+    std::ostringstream m;
+    m.precision(4);
+    const double l10 = p.steps * std::log10(p.growth_rate);  // the power itself may overflow a double
+    const double e = std::floor(l10);
+    m << "growth_rate^steps = " << p.growth_rate << "^" << p.steps << " = " << std::pow(10.0, l10 - e) << "e+" << e
+      << " exceeds " << kMaxStripGrowth << " (the bark would start that many times smaller than the tree); growth_rate "
+      << p.growth_rate << " allows at most " << most << " steps";
+    return err("steps", m.str());
+  }
+  // Dilatation bulges raise the growth exponent to at most 1 + the sum of their positive
+  // amounts where they overlap: the same bound holds there.
+  double bulges = 0;
+  for (const auto& b : p.dilatation) {
+    if (!std::isfinite(b.amount)) return err("dilatation", "amounts must be finite");
+    bulges += std::max(0.0, b.amount);
+  }
+  if (p.steps * std::log(p.growth_rate) * (1.0 + bulges) > std::log(kMaxStripGrowth)) {
+    char m[400];
+    std::snprintf(m, sizeof m,
+                  "bulge amounts summing to %g raise the growth at their centre to growth_rate^(steps x (1 + %g)) = "
+                  "10^%.1f, more than %g; with growth_rate %g and %d steps the amounts may sum to at most %.2f",
+                  bulges, bulges, p.steps * std::log10(p.growth_rate) * (1.0 + bulges), kMaxStripGrowth, p.growth_rate,
+                  p.steps, std::floor(100 * (std::log(kMaxStripGrowth) / (p.steps * std::log(p.growth_rate)) - 1.0)) / 100);
+    return err("dilatation", m);
+  }
   if (p.fracture_stiffness.empty()) return err("fracture_stiffness", "needs at least one value");
   for (size_t i = 0; i < p.fracture_stiffness.size(); ++i) {
     const auto& c = p.fracture_stiffness[i];

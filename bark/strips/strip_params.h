@@ -113,6 +113,12 @@ struct StripParamError {
 // The error for an S outside `r`, naming the range and what it was computed from.
 StripParamError threshold_error(const StripParams& p, const ThresholdRange& r, double softest_epidermis);
 
+// The largest total growth growth_rate^steps: the bark starts this many times smaller than
+// the tree given in the scene (the shrinking strategy of sec. 5.2).
+constexpr double kMaxStripGrowth = 1e6;
+// The most steps `growth_rate` (> 1) allows within kMaxStripGrowth (at most 10^6, the steps limit).
+int max_steps_for_growth(double growth_rate);
+
 // First problem found, if any (ranges of every parameter; S against valid_threshold_range
 // with the reference element's stiffness R).
 std::optional<StripParamError> validate(const StripParams& p);

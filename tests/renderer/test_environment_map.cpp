@@ -36,3 +36,15 @@ TEST(EnvironmentMap, OnePixelWideMapIsAcceptedAndSeenAsItsColour) {
     EXPECT_NEAR(f.beauty[4 * p + 2], 1.0f, 1e-4f);
   }
 }
+
+TEST(EnvironmentMap, AHeaderClaimingAHugeImageIsRefusedBeforeDecoding) {
+  const std::string dir = test::temp_dir("env_huge");
+  test::write_text(dir + "/sky.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 100000\n\x02\x02\x01\x00");
+  test::write_text(dir + "/scene.json", R"({"render": {"resolution": [8, 8], "spp": 1},
+    "lights": [{"type": "environment", "file": "sky.hdr"}], "objects": []})");
+  const auto r = test::run_phellem("render " + dir + "/scene.json -o " + dir + "/out.exr");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("phellem: error: " + dir + "/scene.json: /lights/0/file: cannot read environment map"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("pixels; at most"), std::string::npos) << r.output;
+}

@@ -24,8 +24,8 @@ TempDirs& temp_dirs() {
   return dirs;
 }
 }  // namespace
-CommandResult run_phellem(const std::string& args) {
-  const std::string cmd = std::string(PHELLEM_BINARY) + " " + args + " --quiet 2>&1";
+namespace {
+CommandResult run_command(const std::string& cmd) {
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
@@ -33,6 +33,14 @@ CommandResult run_phellem(const std::string& args) {
   while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
   const int status = pclose(p);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+}  // namespace
+CommandResult run_phellem(const std::string& args) {
+  return run_command(std::string(PHELLEM_BINARY) + " " + args + " --quiet 2>&1");
+}
+CommandResult run_phellem_limited(const std::string& args, int memory_mib, int seconds) {
+  return run_command("ulimit -v " + std::to_string(memory_mib * 1024) + " && exec timeout -k 5 " +
+                     std::to_string(seconds) + " " + PHELLEM_BINARY + " " + args + " --quiet 2>&1");
 }
 std::string temp_dir(const std::string& name) {
   auto d = std::filesystem::temp_directory_path() / ("phellem_test_" + name + "_" + std::to_string(getpid()));

@@ -5,6 +5,10 @@ namespace phellem::test {
 struct CommandResult { int exit_code; std::string output; };
 // Runs the phellem binary with `args` (shell-quoted by the caller), capturing stderr+stdout.
 CommandResult run_phellem(const std::string& args);
+// The same with the address space limited to `memory_mib` MiB and the run to `seconds`
+// (exit code 124 when it timed out): for inputs that could make a broken build allocate
+// without end or wait for ever.
+CommandResult run_phellem_limited(const std::string& args, int memory_mib, int seconds);
 std::string temp_dir(const std::string& name);
 void write_text(const std::string& path, const std::string& text);
 // The whole file as bytes ("" if it cannot be read).
