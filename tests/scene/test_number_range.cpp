@@ -5,19 +5,13 @@
 #include <string>
 
 #include "scene/scene_parser.h"
+#include "tests/support/scene_errors.h"
 #include "util/errors.h"
 
 namespace phellem {
 namespace {
 
-std::string error_of(const std::string& json) {
-  try {
-    parse_scene(json, "scene.json", ".");
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  return "<no error>";
-}
+using test::error_of;
 
 TEST(NumberRange, LargeFiniteNumbersAreOutOfRangeWithTheRange) {
   const auto msg = error_of(R"({"camera": {"position": [0, 1e300, 5]}})");

@@ -7,19 +7,13 @@
 
 #include "util/errors.h"
 #include "scene/scene_parser.h"
+#include "tests/support/scene_errors.h"
 #include "tests/support/test_util.h"
 
 namespace phellem {
 namespace {
 
-std::string error_of(const std::string& json) {
-  try {
-    parse_scene(json, "scene.json", ".");
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  return "<no error>";
-}
+using test::error_of;
 
 TEST(SceneErrors, UnknownKeyNamesItsPath) {
   const auto msg = error_of(R"({"objects": [{"type": "sphere", "radius": 1, "radiuss": 2}]})");

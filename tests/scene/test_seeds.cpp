@@ -6,20 +6,14 @@
 #include <string>
 
 #include "scene/scene_parser.h"
+#include "tests/support/scene_errors.h"
 #include "util/errors.h"
 #include "util/hash.h"
 
 namespace phellem {
 namespace {
 
-std::string error_of(const std::string& json) {
-  try {
-    parse_scene(json, "scene.json", ".");
-  } catch (const UserError& e) {
-    return e.what();
-  }
-  return "<no error>";
-}
+using test::error_of;
 
 const char* kRange = "[0, 18446744073709551615]";
 
