@@ -52,8 +52,9 @@ int run_render(const cli::Options& o) {
   const Camera camera(l.desc.camera, l.width, l.height);
   RenderResult res = render_image(*scene, camera, l.width, l.height, l.settings);
   const std::string exr = render_exr_path(o);
-  if (!exr.empty()) write_exr(res.film, out.stage("-o", exr));
-  if (!o.png.empty()) write_png(res.film, out.stage("--png", o.png), o.view.empty() ? default_view() : o.view);
+  if (!exr.empty()) out.write("-o", exr, [&](const std::string& tmp) { write_exr(res.film, tmp); });
+  if (!o.png.empty())
+    out.write("--png", o.png, [&](const std::string& tmp) { write_png(res.film, tmp, o.view.empty() ? default_view() : o.view); });
   const double total = since(t0);
   const auto& gs = scene->stats();
   if (!o.quiet)

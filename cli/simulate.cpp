@@ -78,7 +78,7 @@ int run_simulate(const cli::Options& o) {
       const bark::FractureField field = sim.field(k, o.width.value_or(0), o.height.value_or(0));
       bar.advance();
       const std::string file = (dir / (base + "_" + sim.part_name(k) + ".exr")).string();
-      write_field(field, file, out.stage("-o", file));
+      out.write("-o", file, [&](const std::string& tmp) { write_field(field, file, tmp); });
       bar.advance();
       t_dress += since(td);
       const bark::StripModel& model = sim.bark().model(k);
@@ -97,7 +97,7 @@ int run_simulate(const cli::Options& o) {
         const auto tm = Clock::now();
         const GlbMesh mesh = sim.mesh(k);
         const std::string glb = (dir / (base + "_" + sim.part_name(k) + ".glb")).string();
-        write_glb(out.stage("-o", glb), base + "_" + sim.part_name(k), mesh);
+        out.write("-o", glb, [&](const std::string& tmp) { write_glb(tmp, base + "_" + sim.part_name(k), mesh); });
         mesh_triangles += (long long)mesh.triangle_count();
         meshes.push_back(glb);
         t_mesh += since(tm);

@@ -25,7 +25,7 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
     totals.t_simulate += run.simulate_s;
     const auto tw = Clock::now();
     const std::string glb = (dir / (name + ".glb")).string();
-    write_cracked_glb(out.stage("-o", glb), name, result);
+    out.write("-o", glb, [&](const std::string& tmp) { write_cracked_glb(tmp, name, result); });
     const bark::StressStats& st = run.stats;
     const nlohmann::json summary = {{"model", "stress"},
                                     {"object", name},

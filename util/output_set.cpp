@@ -105,6 +105,20 @@ void OutputSet::expect_folder(const std::string& option, const std::string& path
   folders_.push_back(Folder{option, path, key, {}, false});
 }
 
+void OutputSet::write(const std::string& option, const std::string& path, const std::function<void(const std::string& tmp)>& write) {
+  const std::string tmp = stage(option, path);
+  try {
+    write(tmp);
+  } catch (const UserError& e) {
+    // Writers that write atomically themselves use a temporary of the temporary.
+    std::string detail = e.detail();
+    for (const std::string& name : {temp_path_beside(tmp), tmp})
+      for (size_t at = detail.find(name); at != std::string::npos; at = detail.find(name, at + path.size()))
+        detail.replace(at, name.size(), path);
+    throw UserError(path, e.where(), detail);
+  }
+}
+
 std::string OutputSet::stage(const std::string& option, const std::string& path) {
   const std::string key = key_of(path);
   File* f = nullptr;

@@ -5,6 +5,7 @@
 // stay as they were; a termination signal removes them too (util/temp_files.h).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -29,6 +30,10 @@ class OutputSet {
   // The temporary to write `path` to now. A file not expected yet is checked as expect_file()
   // checks it; it may lie in an expected folder.
   std::string stage(const std::string& option, const std::string& path);
+  // Stages `path` and calls write(temporary). A UserError from the writer is reported at
+  // `path` (the target the user named), with the temporaries' names in its message replaced
+  // by it.
+  void write(const std::string& option, const std::string& path, const std::function<void(const std::string& tmp)>& write);
   // Renames every staged temporary over its target (a termination signal waits for the end).
   void commit();
 

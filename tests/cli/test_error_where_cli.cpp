@@ -84,8 +84,8 @@ TEST(ErrorWhereCli, EveryMessageHasFileWhereAndWhat) {
       {"broken glTF", test::run_phellem("render " + d + "/broken.json -o " + d + "/o.exr"), d + "/broken.gltf: read: "},
       {"EXR not writable", test::run_phellem("render " + d + "/tiny.json -o /proc/phellem_never.exr"), "/proc/phellem_never.exr: open: "},
       {"PNG not writable", test::run_phellem("render " + d + "/tiny.json --png /proc/phellem_never.png"), "/proc/phellem_never.png: open: "},
-      {"output is a folder", test::run_phellem("render " + d + "/tiny.json -o " + d + "/taken.exr"), d + "/taken.exr: rename: "},
-      {"output folder impossible", test::run_phellem("render " + d + "/tiny.json -o /proc/no/x.exr"), "/proc/no/x.exr: output folder: "},
+      {"output is a folder", test::run_phellem("render " + d + "/tiny.json -o " + d + "/taken.exr"), d + "/taken.exr: -o: "},  // refused before any work
+      {"output folder impossible", test::run_phellem("render " + d + "/tiny.json -o /proc/no/x.exr"), "/proc/no/x.exr: -o: "},  // refused before any work
       {"stats not writable", test::run_phellem("render " + d + "/tiny.json -o " + d + "/o.exr --stats /proc/phellem_stats.json"),
        "/proc/phellem_stats.json: --stats: "},
       {"simulate folder impossible", test::run_phellem("simulate " + d + "/stress.json -o /proc/no/out"), "/proc/no/out: -o: "},
