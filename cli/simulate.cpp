@@ -13,6 +13,7 @@
 #include "util/errors.h"
 #include "util/progress.h"
 #include "scene/scene_parser.h"
+#include "cli/memory_check.h"
 #include "cli/simulate_stress.h"
 #include "scene/strip_bark_tree.h"
 
@@ -55,6 +56,7 @@ void write_field(const bark::FractureField& f, const std::string& path) {
 int run_simulate(const cli::Options& o) {
   const auto t0 = Clock::now();
   const SceneDesc desc = load_scene_file(o.scene);
+  check_scene_memory(o, desc, 0, 0);
   std::filesystem::path dir(o.exr);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
