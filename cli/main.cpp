@@ -13,6 +13,7 @@
 
 #include "cli/frame_sequence.h"
 #include "cli/growth.h"
+#include "cli/memory_check.h"
 #include "cli/options.h"
 #include "cli/outputs.h"
 #include "cli/render_job.h"
@@ -127,6 +128,7 @@ int main(int argc, char** argv) {
       static tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(*o.threads));
     }
     OIIO::attribute("threads", o.threads.value_or(0));
+    if (o.memory_estimate) return run_memory_estimate(o);
     if (o.command == "simulate") return run_simulate(o);
     if (o.command == "growth") return run_growth(o);
     return o.command == "render" ? run_render(o) : run_turntable(o);

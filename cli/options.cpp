@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "scene/memory_estimate.h"
 #include "util/errors.h"
 
 namespace phellem::cli {
@@ -62,6 +63,8 @@ std::string usage() {
          "  phellem growth SCENE.json --frames N -o DIR/frame_%04d.exr [--png] [--mp4 OUT.mp4]\n"
          "                 [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
          "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--no-mesh] [--threads N] [--quiet]\n"
+         "  Every command also takes [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
+         "  physical memory) and [--memory-estimate] (print the memory each stage needs, and stop).\n"
          "  phellem --help | --version\n"
          "Ranges: --spp N in [1, 1048576] (render.spp), --seed S in [0, 18446744073709551615]\n"
          "(render.seed), --res WxH each in [1, 32768], --threads N in [1, 1024], --frames N in\n"
@@ -106,6 +109,14 @@ Options parse(const std::vector<std::string>& args) {
     } else if (a == "--view") o.view = value();
     else if (a == "--quiet" || a == "-q") o.quiet = true;
     else if (a == "--no-mesh" && o.command == "simulate") o.no_mesh = true;
+    else if (a == "--memory-limit") {
+      o.memory_limit = value();
+      try {
+        parse_memory_size(o.memory_limit);
+      } catch (const std::invalid_argument&) {
+        bad(a, "expected a memory size such as 6G, 512M, 1.5T or 50% (of physical memory), got \"" + o.memory_limit + "\"");
+      }
+    } else if (a == "--memory-estimate") o.memory_estimate = true;
     else if (!a.empty() && a[0] == '-') bad(a, "unknown option for `" + o.command + "`\n" + usage());
     else if (a.empty()) bad("SCENE", "the scene file name is empty");
     else if (o.scene.empty()) o.scene = a;

@@ -14,7 +14,8 @@ struct Loaded {
   int width = 0, height = 0;
 };
 
-// Throws UserError when the film would not fit in this machine's memory.
+// Throws UserError when the scene and the film would not fit in the memory budget
+// (cli/memory_check.h), before any stage runs.
 Loaded load(const cli::Options& o);
 // An unknown --view is a UserError before any work starts.
 void check_view(const cli::Options& o);

@@ -14,6 +14,7 @@
 #include "util/output_set.h"
 #include "util/progress.h"
 #include "scene/scene_parser.h"
+#include "cli/memory_check.h"
 #include "scene/strip_bark_tree.h"
 
 namespace phellem {
@@ -56,6 +57,7 @@ int run_simulate(const cli::Options& o) {
   OutputSet out;
   expect_outputs(o, out);
   const SceneDesc desc = load_scene_file(o.scene);
+  check_scene_memory(o, desc, 0, 0);
   const std::filesystem::path dir(o.exr);
   double t_sim = 0, t_dress = 0, t_mesh = 0;
   long long strips = 0, fractures = 0, created = 0, propagated = 0, merged = 0;

@@ -1,0 +1,63 @@
+#include "cli/memory_check.h"
+
+#include <iostream>
+
+#include "io/film.h"
+#include "renderer/film_memory.h"
+#include "scene/memory_estimate.h"
+#include "scene/scene_parser.h"
+
+namespace phellem {
+
+namespace {
+
+MemoryRequest request(const cli::Options& o, const SceneDesc& desc, int width, int height) {
+  MemoryRequest r;
+  if (o.command == "simulate") {
+    r.command = MemoryCommand::Simulate;
+    r.field_width = o.width.value_or(0);
+    r.field_height = o.height.value_or(0);
+    r.meshes = !o.no_mesh;
+    return r;
+  }
+  r.command = o.command == "growth" ? MemoryCommand::Growth : MemoryCommand::Render;
+  r.height = height;
+  // render writes render.exr when given no output; frame sequences always write EXRs, and PNGs
+  // with --png or for --mp4.
+  const bool frames = o.command != "render";
+  const bool exr = frames || !o.exr.empty() || o.png.empty();
+  const bool png = frames ? o.png_frames || !o.mp4.empty() : !o.png.empty();
+  const FilmMemory fm = film_memory(width, height, exr, png);
+  const std::string wh = std::to_string(width) + "x" + std::to_string(height);
+  r.film.bytes = fm.peak();
+  r.film.what = "the " + wh + " film (" + std::to_string(Film::kChannels) + " floats a pixel in its layers" +
+                (exr && png ? ", and the EXR's and the PNG's copies)" : exr ? ", and the EXR's copy)" : ", and the PNG's copy)");
+  if (o.width) {
+    r.film.where = "--res";
+    r.film.advice = "lower --res (now " + wh + ")";
+  } else {
+    r.film.file = desc.file;
+    r.film.where = "/render/resolution";
+    r.film.advice = "lower the resolution (now " + wh + "), or render it smaller with --res";
+  }
+  return r;
+}
+
+}  // namespace
+
+void check_scene_memory(const cli::Options& o, const SceneDesc& desc, int width, int height) {
+  const MemoryBudget budget = memory_budget(o.memory_limit);
+  check_memory(estimate_memory(desc, request(o, desc, width, height)), budget);
+}
+
+int run_memory_estimate(const cli::Options& o) {
+  const SceneDesc desc = o.scene.empty() ? default_scene() : load_scene_file(o.scene);
+  const int width = o.width.value_or(desc.render.width), height = o.height.value_or(desc.render.height);
+  const MemoryBudget budget = memory_budget(o.memory_limit);
+  const MemoryEstimate e = estimate_memory(desc, request(o, desc, width, height));
+  std::cout << describe(e, budget);
+  check_memory(e, budget);
+  return 0;
+}
+
+}  // namespace phellem
