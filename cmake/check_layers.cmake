@@ -1,4 +1,4 @@
-# Fails when a file includes a folder above its own in the layering
+# Fails when a file includes a folder above its own in the layering, or Embree below renderer/,
 #   util -> bark -> io -> scene -> renderer -> cli
 # (a folder may include its own and any folder to its left). Run as the `include_graph` test:
 #   cmake -DSOURCE_DIR=<repo> -P cmake/check_layers.cmake
@@ -17,6 +17,18 @@ foreach(from_index RANGE 0 5)
         string(APPEND violations "  ${rel} includes ${to}/ (${from}/ may include only folders to its left)\n")
       endif()
     endforeach()
+  endforeach()
+endforeach()
+# Embree is the path tracer's alone: nothing below renderer/ may include it (the scene library
+# builds and links without it).
+foreach(from util bark io scene)
+  file(GLOB_RECURSE files "${SOURCE_DIR}/${from}/*.h" "${SOURCE_DIR}/${from}/*.cpp")
+  foreach(f IN LISTS files)
+    file(STRINGS "${f}" embree REGEX "^[ \t]*#[ \t]*include[ \t]+<embree")
+    if(embree)
+      file(RELATIVE_PATH rel "${SOURCE_DIR}" "${f}")
+      string(APPEND violations "  ${rel} includes Embree (only renderer/ may)\n")
+    endif()
   endforeach()
 endforeach()
 if(violations)
