@@ -3,11 +3,11 @@
 
 #include <vector>
 
+#include "bark/geometry/tessellation.h"
 #include "bark/strips/strip_equilibrium.h"
 #include "renderer/bsdf.h"
-#include "scene/displacement.h"
 #include "renderer/sampler.h"
-#include "bark/geometry/tessellation.h"
+#include "scene/displacement.h"
 #include "scene/tree_surface.h"
 
 using namespace phellem;

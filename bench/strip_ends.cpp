@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   while (m.steps_done() < m.steps_total()) {
     m.step();
-    if (trace && m.stats().created != created) std::printf("to step %d: %lld new fractures\n", m.steps_done(), m.stats().created - created);
+    if (trace && m.stats().created != created)
+      std::printf("to step %d: %lld new fractures\n", m.steps_done(), m.stats().created - created);
     created = m.stats().created;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -41,7 +42,9 @@ int main(int argc, char** argv) {
   long total = 0;
   for (int e : ends) total += e;
   const EndsPeak peak = ends_peak(ends);
-  std::printf("%s seed %llu: %zu strips, %d steps in %.2f s, %lld fractures, %ld free ends; 3-strip runs: median %.0f, densest %d (strip %zu)\n",
-              preset.c_str(), (unsigned long long)p.seed, ends.size(), m.steps_done(), seconds, m.stats().created, total,
-              peak.median, peak.peak, peak.strip);
+  std::printf(
+      "%s seed %llu: %zu strips, %d steps in %.2f s, %lld fractures, %ld free ends; 3-strip runs: median %.0f, densest %d (strip "
+      "%zu)\n",
+      preset.c_str(), (unsigned long long)p.seed, ends.size(), m.steps_done(), seconds, m.stats().created, total, peak.median,
+      peak.peak, peak.strip);
 }

@@ -80,11 +80,16 @@ int main(int argc, char** argv) {
   int spp = 16, repeat = 3, w = 0, h = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--spp" && i + 1 < argc) spp = std::atoi(argv[++i]);
-    else if (a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
-    else if (a == "--json" && i + 1 < argc) json_out = argv[++i];
-    else if (a == "--res" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &w, &h);
-    else scene_path = a;
+    if (a == "--spp" && i + 1 < argc)
+      spp = std::atoi(argv[++i]);
+    else if (a == "--repeat" && i + 1 < argc)
+      repeat = std::atoi(argv[++i]);
+    else if (a == "--json" && i + 1 < argc)
+      json_out = argv[++i];
+    else if (a == "--res" && i + 1 < argc)
+      std::sscanf(argv[++i], "%dx%d", &w, &h);
+    else
+      scene_path = a;
   }
   const SceneDesc desc = scene_path.empty() ? default_scene() : load_scene_file(scene_path);
   if (!w) {

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "cli/outputs.h"
+#include "io/image_output.h"
 #include "util/atomic_file.h"
 #include "util/errors.h"
-#include "io/image_output.h"
 
 namespace phellem {
 
@@ -38,7 +38,9 @@ std::string frame_name(const std::string& pattern, int frame) {
   return buf.data();
 }
 
-std::string png_frame_name(const std::string& exr_frame) { return std::filesystem::path(exr_frame).replace_extension(".png").string(); }
+std::string png_frame_name(const std::string& exr_frame) {
+  return std::filesystem::path(exr_frame).replace_extension(".png").string();
+}
 
 void render_frame(const cli::Options& o, const Loaded& l, const RenderScene& scene, const Camera& camera, int frame, int frames,
                   OutputSet& out) {

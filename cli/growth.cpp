@@ -6,9 +6,9 @@
 #include "cli/frame_sequence.h"
 #include "cli/outputs.h"
 #include "cli/render_job.h"
-#include "util/errors.h"
 #include "renderer/render_scene.h"
 #include "scene/strip_bark_tree.h"
+#include "util/errors.h"
 
 namespace phellem {
 

@@ -18,13 +18,13 @@
 #include "cli/outputs.h"
 #include "cli/render_job.h"
 #include "cli/simulate.h"
-#include "util/errors.h"
-#include "util/output_set.h"
-#include "util/temp_files.h"
 #include "io/image_output.h"
 #include "renderer/integrator.h"
 #include "renderer/render_scene.h"
 #include "scene/scene_parser.h"
+#include "util/errors.h"
+#include "util/output_set.h"
+#include "util/temp_files.h"
 
 namespace phellem {
 
@@ -55,7 +55,8 @@ int run_render(const cli::Options& o) {
   const std::string exr = render_exr_path(o);
   if (!exr.empty()) out.write("-o", exr, [&](const std::string& tmp) { write_exr(res.film, tmp); });
   if (!o.png.empty())
-    out.write("--png", o.png, [&](const std::string& tmp) { write_png(res.film, tmp, o.view.empty() ? default_view() : o.view); });
+    out.write("--png", o.png,
+              [&](const std::string& tmp) { write_png(res.film, tmp, o.view.empty() ? default_view() : o.view); });
   const double total = since(t0);
   const auto& gs = scene->stats();
   if (!o.quiet)
@@ -67,7 +68,9 @@ int run_render(const cli::Options& o) {
     nlohmann::json j;
     j["spp"] = l.settings.spp;
     j["resolution"] = {l.width, l.height};
-    j["time_s"] = {{"total", total}, {"load", t_load}, {"build", t_build}, {"bark", bark.seconds}, {"tessellate", gs.tessellate_s}, {"bvh", gs.bvh_s}, {"render", res.seconds}};
+    j["time_s"] = {
+        {"total", total},  {"load", t_load},       {"build", t_build}, {"bark", bark.seconds}, {"tessellate", gs.tessellate_s},
+        {"bvh", gs.bvh_s}, {"render", res.seconds}};
     j["rays"] = res.rays;
     j["mrays_per_s"] = res.rays / res.seconds * 1e-6;
     j["triangles"] = gs.triangles;

@@ -31,7 +31,9 @@ MemoryRequest request(const cli::Options& o, const SceneDesc& desc, int width, i
   const std::string wh = std::to_string(width) + "x" + std::to_string(height);
   r.film.bytes = fm.peak();
   r.film.what = "the " + wh + " film (" + std::to_string(Film::kChannels) + " floats a pixel in its layers" +
-                (exr && png ? ", and the EXR's and the PNG's copies)" : exr ? ", and the EXR's copy)" : ", and the PNG's copy)");
+                (exr && png ? ", and the EXR's and the PNG's copies)"
+                 : exr      ? ", and the EXR's copy)"
+                            : ", and the PNG's copy)");
   if (o.width) {
     r.film.where = "--res";
     r.film.advice = "lower --res (now " + wh + ")";

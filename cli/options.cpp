@@ -89,26 +89,39 @@ Options parse(const std::vector<std::string>& args) {
       if (args[i + 1].empty()) bad(a, "the value is empty");
       return args[++i];
     };
-    if (a == "-o" || a == "--output") o.exr = value();
+    if (a == "-o" || a == "--output")
+      o.exr = value();
     else if (a == "--png") {
-      if (frames) o.png_frames = true;
-      else o.png = value();
-    } else if (a == "--mp4" && frames) o.mp4 = value();
-    else if (a == "--stats") o.stats = value();
-    else if (a == "--spp") o.spp = int(integer(a, value(), 1, 1 << 20));
-    else if (a == "--threads") o.threads = int(integer(a, value(), 1, 1024));
-    else if (a == "--frames" && frames) o.frames = int(integer(a, value(), 1, 100000));
-    else if (a == "--seed") o.seed = seed(a, value());
-    else if (a == "--degrees" && o.command == "turntable") o.degrees = degrees(a, value());
+      if (frames)
+        o.png_frames = true;
+      else
+        o.png = value();
+    } else if (a == "--mp4" && frames)
+      o.mp4 = value();
+    else if (a == "--stats")
+      o.stats = value();
+    else if (a == "--spp")
+      o.spp = int(integer(a, value(), 1, 1 << 20));
+    else if (a == "--threads")
+      o.threads = int(integer(a, value(), 1, 1024));
+    else if (a == "--frames" && frames)
+      o.frames = int(integer(a, value(), 1, 100000));
+    else if (a == "--seed")
+      o.seed = seed(a, value());
+    else if (a == "--degrees" && o.command == "turntable")
+      o.degrees = degrees(a, value());
     else if (a == "--res") {
       const std::string v = value();
       const auto x = v.find('x');
       if (x == std::string::npos) bad(a, "expected WxH, e.g. 1920x1080, got \"" + v + "\"");
       o.width = int(integer(a, v.substr(0, x), 1, 32768));
       o.height = int(integer(a, v.substr(x + 1), 1, 32768));
-    } else if (a == "--view") o.view = value();
-    else if (a == "--quiet" || a == "-q") o.quiet = true;
-    else if (a == "--no-mesh" && o.command == "simulate") o.no_mesh = true;
+    } else if (a == "--view")
+      o.view = value();
+    else if (a == "--quiet" || a == "-q")
+      o.quiet = true;
+    else if (a == "--no-mesh" && o.command == "simulate")
+      o.no_mesh = true;
     else if (a == "--memory-limit") {
       o.memory_limit = value();
       try {
@@ -116,11 +129,16 @@ Options parse(const std::vector<std::string>& args) {
       } catch (const std::invalid_argument&) {
         bad(a, "expected a memory size such as 6G, 512M, 1.5T or 50% (of physical memory), got \"" + o.memory_limit + "\"");
       }
-    } else if (a == "--memory-estimate") o.memory_estimate = true;
-    else if (!a.empty() && a[0] == '-') bad(a, "unknown option for `" + o.command + "`\n" + usage());
-    else if (a.empty()) bad("SCENE", "the scene file name is empty");
-    else if (o.scene.empty()) o.scene = a;
-    else bad(a, "more than one scene file given");
+    } else if (a == "--memory-estimate")
+      o.memory_estimate = true;
+    else if (!a.empty() && a[0] == '-')
+      bad(a, "unknown option for `" + o.command + "`\n" + usage());
+    else if (a.empty())
+      bad("SCENE", "the scene file name is empty");
+    else if (o.scene.empty())
+      o.scene = a;
+    else
+      bad(a, "more than one scene file given");
   }
   if (o.command == "simulate") {
     if (o.scene.empty()) bad("simulate", "a scene file is required");

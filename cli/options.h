@@ -18,7 +18,7 @@ struct Options {
   std::optional<float> degrees;
   std::string view;
   bool quiet = false;
-  bool no_mesh = false;  // simulate: skip the .glb bark meshes
+  bool no_mesh = false;          // simulate: skip the .glb bark meshes
   std::string memory_limit;      // --memory-limit SIZE (empty: PHELLEM_MEMORY_LIMIT or 3/4 of physical memory)
   bool memory_estimate = false;  // --memory-estimate: print the estimate and stop
 };

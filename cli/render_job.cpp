@@ -2,8 +2,8 @@
 
 #include "cli/memory_check.h"
 #include "io/image_output.h"
-#include "util/errors.h"
 #include "scene/scene_parser.h"
+#include "util/errors.h"
 
 namespace phellem {
 

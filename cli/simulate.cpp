@@ -8,14 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "cli/memory_check.h"
 #include "cli/outputs.h"
 #include "cli/simulate_stress.h"
+#include "scene/scene_parser.h"
+#include "scene/strip_bark_tree.h"
 #include "util/errors.h"
 #include "util/output_set.h"
 #include "util/progress.h"
-#include "scene/scene_parser.h"
-#include "cli/memory_check.h"
-#include "scene/strip_bark_tree.h"
 
 namespace phellem {
 
@@ -28,16 +28,16 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // cylinder (s = length), so the image looks like the bark seen from outside, axis up. Written
 // to `tmp`, the staged temporary of `path`.
 void write_field(const bark::FractureField& f, const std::string& path, const std::string& tmp) {
-  const std::vector<std::string> names = {"color.R", "color.G", "color.B", "opening", "depth", "uv0.u", "uv0.v",
-                                          "fracture_id", "age", "level", "interior"};
+  const std::vector<std::string> names = {"color.R", "color.G",     "color.B", "opening", "depth",   "uv0.u",
+                                          "uv0.v",   "fracture_id", "age",     "level",   "interior"};
   const int nc = int(names.size());
   std::vector<float> px(size_t(f.width) * f.height * nc);
   for (int y = 0; y < f.height; ++y)
     for (int x = 0; x < f.width; ++x) {
       const size_t p = f.index(x, y);
       float* o = &px[(size_t(f.height - 1 - y) * f.width + x) * nc];
-      const float v[] = {f.color[3 * p], f.color[3 * p + 1], f.color[3 * p + 2], f.opening[p], f.depth[p], f.uv0[2 * p],
-                         f.uv0[2 * p + 1], f.fracture_id[p], f.age[p], f.level[p], f.interior[p]};
+      const float v[] = {f.color[3 * p],   f.color[3 * p + 1], f.color[3 * p + 2], f.opening[p], f.depth[p],   f.uv0[2 * p],
+                         f.uv0[2 * p + 1], f.fracture_id[p],   f.age[p],           f.level[p],   f.interior[p]};
       std::copy(v, v + nc, o);
     }
   OIIO::ImageSpec spec(f.width, f.height, nc, OIIO::TypeDesc::FLOAT);
@@ -111,7 +111,8 @@ int run_simulate(const cli::Options& o) {
   }
   const StressRunTotals stress = simulate_stress_objects(o, desc, dir, out);
   if (outputs == 0 && stress.objects == 0)
-    throw UserError(o.scene, "/objects", "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
+    throw UserError(o.scene, "/objects",
+                    "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
   if (!o.stats.empty()) {
     nlohmann::json j;
     if (stress.objects > 0) {
@@ -124,22 +125,28 @@ int run_simulate(const cli::Options& o) {
            {"crack_edges", stress.crack_edges},
            {"crack_length_m", stress.crack_length},
            {"outputs", stress.outputs},
-           {"time_s", {{"total", since(t0)}, {"preprocess", stress.t_preprocess}, {"simulate", stress.t_simulate}, {"write", stress.t_write}}}};
+           {"time_s",
+            {{"total", since(t0)},
+             {"preprocess", stress.t_preprocess},
+             {"simulate", stress.t_simulate},
+             {"write", stress.t_write}}}};
     }
     if (outputs > 0) {
-      if (stress.objects > 0) j["model"] = "strips+stress";
-      else j["model"] = "strips";
+      if (stress.objects > 0)
+        j["model"] = "strips+stress";
+      else
+        j["model"] = "strips";
       j.update(nlohmann::json{
-                        {"strips", strips},
-                        {"steps", steps},
-                        {"fractures", fractures},
-                        {"fractures_created", created},
-                        {"propagations", propagated},
-                        {"merges", merged},
-                        {"junction_crossings", crossings},
-                        {"outputs", files},
-                        {"meshes", meshes},
-                        {"mesh_triangles", mesh_triangles},
+          {"strips", strips},
+          {"steps", steps},
+          {"fractures", fractures},
+          {"fractures_created", created},
+          {"propagations", propagated},
+          {"merges", merged},
+          {"junction_crossings", crossings},
+          {"outputs", files},
+          {"meshes", meshes},
+          {"mesh_triangles", mesh_triangles},
       });
       j["time_s"]["total"] = since(t0);
       j["time_s"]["simulate"] = t_sim + stress.t_simulate;

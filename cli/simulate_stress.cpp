@@ -13,7 +13,8 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 }  // namespace
 
-StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir, OutputSet& out) {
+StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir,
+                                        OutputSet& out) {
   StressRunTotals totals;
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
     const ObjectDesc& obj = desc.objects[oi];

@@ -21,6 +21,7 @@ struct StressRunTotals {
 };
 
 // Runs the stress objects of `desc` and stages their outputs, in folder `dir`, in `out`.
-StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir, OutputSet& out);
+StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& desc, const std::filesystem::path& dir,
+                                        OutputSet& out);
 
 }  // namespace phellem

@@ -22,7 +22,11 @@ void write_cracked_glb(const std::string& path, const std::string& name, const b
     dy[k] = c.displacement[k].y();
     dz[k] = c.displacement[k].z();
   }
-  glb.scalars = {{"_CRACK_WIDTH", c.crack_width}, {"_CRACK_COMPONENT", component}, {"_DISPLACEMENT_X", dx}, {"_DISPLACEMENT_Y", dy}, {"_DISPLACEMENT_Z", dz}};
+  glb.scalars = {{"_CRACK_WIDTH", c.crack_width},
+                 {"_CRACK_COMPONENT", component},
+                 {"_DISPLACEMENT_X", dx},
+                 {"_DISPLACEMENT_Y", dy},
+                 {"_DISPLACEMENT_Z", dz}};
   GlbPart bark{"bark", v.indices, Color(0.45f, 0.36f, 0.27f), 0.8f};
   GlbPart cracks{"cracks", {}, Color(0.05f, 0.03f, 0.02f), 1.0f};
   cracks.lines = true;
@@ -34,7 +38,8 @@ void write_cracked_glb(const std::string& path, const std::string& name, const b
 bark::CrackedMesh read_cracked_glb(const std::string& path) {
   const tinygltf::Model model = open_gltf(path);
   GltfReader rd(model, path);
-  if (model.meshes.size() != 1) rd.fail("meshes", "a cracked mesh file holds exactly one mesh, found " + std::to_string(model.meshes.size()));
+  if (model.meshes.size() != 1)
+    rd.fail("meshes", "a cracked mesh file holds exactly one mesh, found " + std::to_string(model.meshes.size()));
   const tinygltf::Mesh& mesh = model.meshes[0];
   bark::CrackedMesh out;
   bool have_triangles = false;
@@ -43,7 +48,8 @@ bark::CrackedMesh read_cracked_glb(const std::string& path) {
     const std::string where = "meshes[0].primitives[" + std::to_string(pi) + "]";
     auto attr = [&](const char* key) {
       const auto it = prim.attributes.find(key);
-      if (it == prim.attributes.end()) rd.fail(where + ".attributes", std::string("missing ") + key + " (not a Phellem cracked mesh?)");
+      if (it == prim.attributes.end())
+        rd.fail(where + ".attributes", std::string("missing ") + key + " (not a Phellem cracked mesh?)");
       return it->second;
     };
     if (prim.indices < 0) rd.fail(where + ".indices", "missing");
@@ -68,7 +74,8 @@ bark::CrackedMesh read_cracked_glb(const std::string& path) {
     for (size_t k = 0; k < n; ++k) {
       out.mesh.positions.emplace_back(p[3 * k], p[3 * k + 1], p[3 * k + 2]);
       out.crack_width.push_back(width[k]);
-      if (comp[k] != std::floor(comp[k]) || comp[k] < -1) rd.fail(where + ".attributes._CRACK_COMPONENT", "must hold integers >= -1");
+      if (comp[k] != std::floor(comp[k]) || comp[k] < -1)
+        rd.fail(where + ".attributes._CRACK_COMPONENT", "must hold integers >= -1");
       out.component.push_back(int32_t(comp[k]));
       out.displacement.emplace_back(dx[k], dy[k], dz[k]);
     }

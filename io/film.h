@@ -2,6 +2,7 @@
 // sample weighs the same). Layers and channel names are documented in docs/scene-format.md.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace phellem {

@@ -3,11 +3,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "util/errors.h"
 #include "io/gltf_reader.h"
-#include "util/hash.h"
 #include "io/mesh_io.h"
 #include "util/cache_dir.h"
+#include "util/errors.h"
+#include "util/hash.h"
 
 namespace phellem {
 
@@ -38,7 +38,8 @@ Mat4f node_matrix(const tinygltf::Node& n, const GltfReader& rd, const std::stri
   Eigen::Affine3f a = Eigen::Affine3f::Identity();
   if (n.translation.size() == 3) a.translate(Vec3f(float(n.translation[0]), float(n.translation[1]), float(n.translation[2])));
   if (n.rotation.size() == 4)
-    a.rotate(Eigen::Quaternionf(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])).normalized());
+    a.rotate(
+        Eigen::Quaternionf(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])).normalized());
   if (n.scale.size() == 3) a.scale(Vec3f(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
   return a.matrix();
 }
@@ -49,7 +50,8 @@ std::string image_file(const tinygltf::Model& m, int tex_index, const std::strin
     throw UserError(gltf_path, where, "texture index " + std::to_string(tex_index) + " out of range");
   const int src = m.textures[tex_index].source;
   if (src < 0 || size_t(src) >= m.images.size())
-    throw UserError(gltf_path, "textures[" + std::to_string(tex_index) + "].source", "image index " + std::to_string(src) + " out of range");
+    throw UserError(gltf_path, "textures[" + std::to_string(tex_index) + "].source",
+                    "image index " + std::to_string(src) + " out of range");
   const tinygltf::Image& img = m.images[src];
   const std::string img_where = "images[" + std::to_string(src) + "]";
   if (!img.uri.empty() && img.uri.rfind("data:", 0) != 0) {
@@ -62,7 +64,8 @@ std::string image_file(const tinygltf::Model& m, int tex_index, const std::strin
   for (unsigned char c : img.image) h = hash_combine(h, c);
   std::string ext = ".png";
   if (img.mimeType == "image/jpeg") ext = ".jpg";
-  const fs::path out = fs::path(texture_cache_dir()) / ("gltf_" + std::to_string(h) + "_" + std::to_string(img.image.size()) + ext);
+  const fs::path out =
+      fs::path(texture_cache_dir()) / ("gltf_" + std::to_string(h) + "_" + std::to_string(img.image.size()) + ext);
   if (!fs::exists(out)) {
     const fs::path tmp = out.string() + ".tmp" + ext;
     std::ofstream f(tmp, std::ios::binary);
@@ -81,7 +84,8 @@ MaterialDesc convert_material(const tinygltf::Model& m, int index, const std::st
   d.where = {path, where};
   const auto& pbr = g.pbrMetallicRoughness;
   if (pbr.baseColorFactor.size() >= 3)
-    d.base_color = Color(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]), float(pbr.baseColorFactor[2])).max(0.0f).min(1.0f);
+    d.base_color =
+        Color(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]), float(pbr.baseColorFactor[2])).max(0.0f).min(1.0f);
   d.roughness = float(std::clamp(pbr.roughnessFactor, 0.0, 1.0));
   d.type = pbr.metallicFactor >= 0.5 ? MaterialType::Conductor : MaterialType::Bark;
   // KHR_materials_specular: F0 = 0.04 × specularFactor × specularColorFactor for the default
@@ -131,7 +135,8 @@ LoadedModel load_gltf(const std::string& path) {
     const tinygltf::Node& node = model.nodes[ni];
     const Mat4f world = parent * node_matrix(node, rd, "nodes[" + std::to_string(ni) + "]");
     if (node.mesh >= 0) {
-      if (size_t(node.mesh) >= model.meshes.size()) rd.fail("nodes[" + std::to_string(ni) + "].mesh", "mesh index " + std::to_string(node.mesh) + " out of range");
+      if (size_t(node.mesh) >= model.meshes.size())
+        rd.fail("nodes[" + std::to_string(ni) + "].mesh", "mesh index " + std::to_string(node.mesh) + " out of range");
       const tinygltf::Mesh& mesh = model.meshes[node.mesh];
       const Mat3f nrm = world.topLeftCorner<3, 3>().inverse().transpose();
       const bool flip = world.topLeftCorner<3, 3>().determinant() < 0;
@@ -144,7 +149,8 @@ LoadedModel load_gltf(const std::string& path) {
         MeshData md;
         const auto P = rd.floats(pos_it->second, 3, where + ".attributes.POSITION");
         const size_t nv = P.size() / 3;
-        for (size_t v = 0; v < nv; ++v) md.positions.push_back(transform_point(world, Vec3f(P[3 * v], P[3 * v + 1], P[3 * v + 2])));
+        for (size_t v = 0; v < nv; ++v)
+          md.positions.push_back(transform_point(world, Vec3f(P[3 * v], P[3 * v + 1], P[3 * v + 2])));
         if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
           const auto N = rd.floats(it->second, 3, where + ".attributes.NORMAL");
           if (N.size() != P.size()) rd.fail(where + ".attributes.NORMAL", "count differs from POSITION");
@@ -163,12 +169,16 @@ LoadedModel load_gltf(const std::string& path) {
         } else {
           for (uint32_t v = 0; v < nv; ++v) md.indices.push_back(v);
         }
-        if (md.indices.size() % 3) rd.fail(where + ".indices", "index count " + std::to_string(md.indices.size()) + " is not a multiple of 3");
+        if (md.indices.size() % 3)
+          rd.fail(where + ".indices", "index count " + std::to_string(md.indices.size()) + " is not a multiple of 3");
         for (size_t k = 0; k < md.indices.size(); ++k)
-          if (md.indices[k] >= nv) rd.fail(where + ".indices", "index " + std::to_string(md.indices[k]) + " at position " + std::to_string(k) + " is out of range (" + std::to_string(nv) + " vertices)");
+          if (md.indices[k] >= nv)
+            rd.fail(where + ".indices", "index " + std::to_string(md.indices[k]) + " at position " + std::to_string(k) +
+                                            " is out of range (" + std::to_string(nv) + " vertices)");
         if (flip)
           for (size_t k = 0; k + 2 < md.indices.size(); k += 3) std::swap(md.indices[k + 1], md.indices[k + 2]);
-        if (prim.material >= int(model.materials.size())) rd.fail(where + ".material", "material index " + std::to_string(prim.material) + " out of range");
+        if (prim.material >= int(model.materials.size()))
+          rd.fail(where + ".material", "material index " + std::to_string(prim.material) + " out of range");
         md.material = prim.material;
         if (!md.normals.empty()) compute_tangents(md);
         out.meshes.push_back(std::move(md));

@@ -9,8 +9,8 @@ namespace phellem {
 namespace {
 
 // Keep encoded image bytes; OpenImageIO decodes them later (tinygltf's stb decode is skipped).
-bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                        const unsigned char* bytes, int size, void*) {
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                        int size, void*) {
   image->image.assign(bytes, bytes + size);
   image->width = image->height = -1;
   return true;
@@ -20,28 +20,31 @@ bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::st
 // extensions; GltfReader::floats reads the integer vertex attributes of KHR_mesh_quantization
 // and the node transforms that undo them are applied). A file that requires any other one
 // cannot be read correctly without it (glTF 2.0, 3.12).
-constexpr std::array<const char*, 3> kSupportedExtensions = {
-    "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_mesh_quantization"};
+constexpr std::array<const char*, 3> kSupportedExtensions = {"KHR_materials_emissive_strength", "KHR_materials_specular",
+                                                             "KHR_mesh_quantization"};
 
 // GLB header: magic "glTF", version 2 (version 1 is the old binary glTF 1.0, whose JSON
 // tinygltf would misread as 2.0).
 void check_glb_header(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   unsigned char h[12] = {};
-  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return;  // too short: tinygltf says so
+  if (!in.read(reinterpret_cast<char*>(h), sizeof h)) return;            // too short: tinygltf says so
   if (h[0] != 'g' || h[1] != 'l' || h[2] != 'T' || h[3] != 'F') return;  // not GLB: tinygltf says so
   const uint32_t version = uint32_t(h[4]) | uint32_t(h[5]) << 8 | uint32_t(h[6]) << 16 | uint32_t(h[7]) << 24;
   if (version != 2)
-    throw UserError(path, "GLB header", "GLB version " + std::to_string(version) + " is not supported; only version 2 (glTF 2.0)");
+    throw UserError(path, "GLB header",
+                    "GLB version " + std::to_string(version) + " is not supported; only version 2 (glTF 2.0)");
 }
 
 void check_model(const tinygltf::Model& model, const std::string& path) {
   const std::string& version = model.asset.version;
   if (version.rfind("2.", 0) != 0)
-    throw UserError(path, "asset.version", version.empty() ? std::string("missing; only glTF 2.0 is supported")
-                                                           : "glTF version \"" + printable(version) + "\" is not supported; only 2.0");
+    throw UserError(path, "asset.version",
+                    version.empty() ? std::string("missing; only glTF 2.0 is supported")
+                                    : "glTF version \"" + printable(version) + "\" is not supported; only 2.0");
   if (!model.asset.minVersion.empty() && model.asset.minVersion != "2.0")
-    throw UserError(path, "asset.minVersion", "the file needs glTF " + printable(model.asset.minVersion) + "; only 2.0 is supported");
+    throw UserError(path, "asset.minVersion",
+                    "the file needs glTF " + printable(model.asset.minVersion) + "; only 2.0 is supported");
   for (size_t k = 0; k < model.extensionsRequired.size(); ++k) {
     const std::string& e = model.extensionsRequired[k];
     if (std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), e) != kSupportedExtensions.end()) continue;

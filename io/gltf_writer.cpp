@@ -92,8 +92,9 @@ void write_glb(const std::string& path, const std::string& mesh_name, const GlbM
     prim.mode = part.lines ? TINYGLTF_MODE_LINE : TINYGLTF_MODE_TRIANGLES;
     prim.material = int(model.materials.size() - 1);
     prim.attributes = attributes;
-    prim.indices = add_accessor(model, add_view(model, part.indices.data(), part.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, part.indices.size());
+    prim.indices =
+        add_accessor(model, add_view(model, part.indices.data(), part.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, part.indices.size());
     mesh.primitives.push_back(prim);
   }
   model.meshes.push_back(mesh);

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "util/math.h"
 #include "bark/geometry/mesh_data.h"
+#include "util/math.h"
 
 namespace phellem {
 
@@ -17,7 +17,7 @@ struct GlbPart {
   std::vector<uint32_t> indices;  // #F×3 into the mesh's vertices (lines: #E×2)
   Color base_color{0.5f, 0.5f, 0.5f};
   float roughness = 0.8f;
-  bool lines = false;             // a LINES primitive (e.g. crack edges) instead of triangles
+  bool lines = false;  // a LINES primitive (e.g. crack edges) instead of triangles
 };
 
 struct GlbMesh {

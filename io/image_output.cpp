@@ -26,9 +26,9 @@ OCIO::ConstConfigRcPtr config() {
 }  // namespace
 
 std::vector<std::string> exr_channel_names() {
-  return {"beauty.R", "beauty.G", "beauty.B", "beauty.A", "albedo.R", "albedo.G", "albedo.B", "normal.X",
-          "normal.Y", "normal.Z", "depth.Z",  "position.X", "position.Y", "position.Z", "object_id.id", "crack.mask",
-          "crack.depth"};
+  return {"beauty.R",   "beauty.G",   "beauty.B",     "beauty.A",   "albedo.R",   "albedo.G",
+          "albedo.B",   "normal.X",   "normal.Y",     "normal.Z",   "depth.Z",    "position.X",
+          "position.Y", "position.Z", "object_id.id", "crack.mask", "crack.depth"};
 }
 
 void write_exr(const Film& f, const std::string& path) {

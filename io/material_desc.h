@@ -11,12 +11,12 @@ namespace phellem {
 
 // A texture is an image file or a built-in procedural pattern.
 struct TextureDesc {
-  std::string file;                 // resolved absolute path, empty if procedural/none
-  std::string procedural;           // "bark" or empty
+  std::string file;        // resolved absolute path, empty if procedural/none
+  std::string procedural;  // "bark" or empty
   Color color_a{0.35f, 0.27f, 0.2f};
   Color color_b{0.12f, 0.09f, 0.07f};
-  Vec2f scale{1, 1};                // UV multiplier
-  bool srgb = true;                 // colour textures: sRGB-encoded 8-bit inputs
+  Vec2f scale{1, 1};  // UV multiplier
+  bool srgb = true;   // colour textures: sRGB-encoded 8-bit inputs
   bool empty() const { return file.empty() && procedural.empty(); }
 };
 

@@ -11,8 +11,8 @@
 namespace phellem {
 
 struct LoadedModel {
-  std::vector<MeshData> meshes;          // material indexes `materials` (-1: none)
-  std::vector<MaterialDesc> materials;   // from the file (glTF PBR / OBJ MTL)
+  std::vector<MeshData> meshes;         // material indexes `materials` (-1: none)
+  std::vector<MaterialDesc> materials;  // from the file (glTF PBR / OBJ MTL)
 };
 
 // Every problem is a UserError naming the file and the glTF element (e.g.

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <string_view>
 
-#include "util/errors.h"
 #include "io/mesh_io.h"
+#include "util/errors.h"
 
 namespace phellem {
 
@@ -69,9 +69,18 @@ void check_obj_indices(const std::string& path) {
     auto statement = [&](std::string_view key) {
       return t.size() > key.size() && t.substr(0, key.size()) == key && (t[key.size()] == ' ' || t[key.size()] == '\t');
     };
-    if (statement("v")) { ++counts[0]; continue; }
-    if (statement("vt")) { ++counts[1]; continue; }
-    if (statement("vn")) { ++counts[2]; continue; }
+    if (statement("v")) {
+      ++counts[0];
+      continue;
+    }
+    if (statement("vt")) {
+      ++counts[1];
+      continue;
+    }
+    if (statement("vn")) {
+      ++counts[2];
+      continue;
+    }
     if (!statement("f") && !statement("l") && !statement("p")) continue;
     const char statement_key = t[0];
     t.remove_prefix(2);
@@ -89,7 +98,9 @@ void check_obj_indices(const std::string& path) {
       for (std::string_view rest = token;; ++nf) {
         const size_t slash = rest.find('/');
         if (nf == 3 || (slash != std::string_view::npos && nf == 2))
-          throw UserError(path, where, std::string("'") + statement_key + "' element \"" + printable(token) + "\" has more than three indices (v/vt/vn)");
+          throw UserError(
+              path, where,
+              std::string("'") + statement_key + "' element \"" + printable(token) + "\" has more than three indices (v/vt/vn)");
         fields[nf] = rest.substr(0, slash);
         if (slash == std::string_view::npos) {
           ++nf;
@@ -101,15 +112,16 @@ void check_obj_indices(const std::string& path) {
         if (k == 1 && fields[k].empty() && nf == 3) continue;  // v//vn
         int64_t idx = 0;
         if (!parse_index(fields[k], &idx))
-          throw UserError(path, where, std::string("'") + statement_key + "' element \"" + printable(token) + "\": " +
-                                           kinds[k] + " index \"" + printable(fields[k]) + "\" is not an integer");
+          throw UserError(path, where,
+                          std::string("'") + statement_key + "' element \"" + printable(token) + "\": " + kinds[k] + " index \"" +
+                              printable(fields[k]) + "\" is not an integer");
         const int64_t n = counts[k];
         if (idx == 0 || idx > n || -idx > n)
-          throw UserError(path, where, std::string("'") + statement_key + "' element \"" + printable(token) + "\": " +
-                                           kinds[k] + " index " + std::to_string(idx) + " is out of range: " +
-                                           std::to_string(n) + " " + keys[k] + " line" + (n == 1 ? "" : "s") +
-                                           " before it (indices run from 1 to " + std::to_string(n) +
-                                           ", or from -1 back to -" + std::to_string(n) + ")");
+          throw UserError(path, where,
+                          std::string("'") + statement_key + "' element \"" + printable(token) + "\": " + kinds[k] + " index " +
+                              std::to_string(idx) + " is out of range: " + std::to_string(n) + " " + keys[k] + " line" +
+                              (n == 1 ? "" : "s") + " before it (indices run from 1 to " + std::to_string(n) +
+                              ", or from -1 back to -" + std::to_string(n) + ")");
       }
     }
   }

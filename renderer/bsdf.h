@@ -10,17 +10,17 @@
 
 #include <optional>
 
-#include "util/math.h"
 #include "renderer/microfacet.h"
+#include "util/math.h"
 
 namespace phellem {
 
 struct BSDFSample {
-  Color f;         // BSDF value (for delta lobes: the weight such that f·|cos|/pdf is right)
+  Color f;  // BSDF value (for delta lobes: the weight such that f·|cos|/pdf is right)
   Vec3f wi;
   float pdf = 0;
   bool delta = false;
-  float eta = 1;   // relative IOR crossed (for transmission)
+  float eta = 1;  // relative IOR crossed (for transmission)
 };
 
 struct BSDF {
@@ -31,9 +31,7 @@ struct BSDF {
   float f90 = 1.0f;              // bark coat reflectance at grazing incidence
   float eta = 1.5f;              // dielectric: interior / exterior
 
-  bool is_delta() const {
-    return (type == Type::Conductor || type == Type::Dielectric) && alpha < 1e-3f;
-  }
+  bool is_delta() const { return (type == Type::Conductor || type == Type::Dielectric) && alpha < 1e-3f; }
   bool has_transmission() const { return type == Type::Dielectric; }
 
   Color eval(const Vec3f& wo, const Vec3f& wi) const;

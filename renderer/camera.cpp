@@ -4,8 +4,7 @@
 
 namespace phellem {
 
-Camera::Camera(const CameraDesc& c, int width, int height)
-    : pos_(c.position), width_(width), height_(height) {
+Camera::Camera(const CameraDesc& c, int width, int height) : pos_(c.position), width_(width), height_(height) {
   forward_ = (c.look_at - c.position).normalized();
   right_ = forward_.cross(c.up.normalized()).normalized();
   up_ = right_.cross(forward_);

@@ -1,8 +1,8 @@
 // Thin-lens perspective camera (pinhole when aperture_radius = 0).
 #pragma once
 
-#include "util/math.h"
 #include "scene/scene_desc.h"
+#include "util/math.h"
 
 namespace phellem {
 

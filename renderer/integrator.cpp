@@ -8,9 +8,9 @@
 #include <limits>
 
 #include "renderer/pixel_filter.h"
-#include "util/progress.h"
 #include "renderer/sampler.h"
 #include "util/hash.h"
+#include "util/progress.h"
 
 namespace phellem {
 
@@ -61,7 +61,8 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     // Texture filter width: the pixel's footprint at the hit (a ray cone, widened after
     // the first bounce where the lobe spreads the cone).
     const float cone = pixel_angle * (depth == 0 ? 1.0f : 8.0f);
-    const ShadingInput in{hit.uv, hit.t * cone * hit.uv_per_metre, depth == 0, hit.bark ? &hit.bark_albedo : nullptr, hit.albedo_scale};
+    const ShadingInput in{hit.uv, hit.t * cone * hit.uv_per_metre, depth == 0, hit.bark ? &hit.bark_albedo : nullptr,
+                          hit.albedo_scale};
     if (depth == 0) {
       first->hit = true;
       first->position = hit.p;
@@ -189,8 +190,10 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
           const Ray ray = camera.generate(Vec2f(x + 0.5f + offset.x(), y + 0.5f + offset.y()), Vec2f(cam[2], cam[3]));
           FirstHit first;
           const Color L = trace_path(scene, ray, sampler, s.max_depth, camera.pixel_angle(), &first, &tile_rays);
-          if (L.allFinite()) sum += L;
-          else ++tile_invalid;
+          if (L.allFinite())
+            sum += L;
+          else
+            ++tile_invalid;
           if (first.hit) {
             coverage += 1;
             albedo += first.albedo;
@@ -224,9 +227,12 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
 
   tbb::task_arena arena(s.threads > 0 ? s.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
-      for (int t = r.begin(); t < r.end(); ++t) render_tile(t);
-    }, tbb::simple_partitioner());
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tiles_x * tiles_y, 1),
+        [&](const tbb::blocked_range<int>& r) {
+          for (int t = r.begin(); t < r.end(); ++t) render_tile(t);
+        },
+        tbb::simple_partitioner());
   });
   progress.finish();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

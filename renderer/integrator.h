@@ -2,8 +2,8 @@
 // (Veach 1997, power heuristic) for every light type, Russian roulette, tiled over TBB.
 #pragma once
 
-#include "renderer/camera.h"
 #include "io/film.h"
+#include "renderer/camera.h"
 #include "renderer/render_scene.h"
 
 namespace phellem {
@@ -13,15 +13,15 @@ struct RenderSettings {
   int max_depth = 8;
   uint64_t seed = 0;  // folded to the sampler's 32 bits by fold_seed (identity below 2^32)
   FilterDesc filter;
-  int threads = 0;          // 0: all cores
+  int threads = 0;  // 0: all cores
   bool progress = false;
   std::string progress_label = "render";
 };
 
 struct RenderResult {
   Film film;
-  long long rays = 0;           // camera + bounce + shadow rays traced
-  long long invalid_samples = 0; // NaN/Inf path contributions discarded
+  long long rays = 0;             // camera + bounce + shadow rays traced
+  long long invalid_samples = 0;  // NaN/Inf path contributions discarded
   double seconds = 0;
 };
 

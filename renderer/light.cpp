@@ -33,8 +33,8 @@ std::optional<LightSample> UniformEnvironment::sample_at(const Vec3f& p, const V
 
 // ---- environment map
 EnvironmentMap::EnvironmentMap(std::vector<float> rgb, int width, int height, float intensity, float rotation_deg)
-    : rgb_(std::move(rgb)), w_(width), h_(height), intensity_(intensity),
-      cos_r_(std::cos(radians(rotation_deg))), sin_r_(std::sin(radians(rotation_deg))) {
+    : rgb_(std::move(rgb)), w_(width), h_(height), intensity_(intensity), cos_r_(std::cos(radians(rotation_deg))),
+      sin_r_(std::sin(radians(rotation_deg))) {
   std::vector<float> f(size_t(w_) * h_);
   double sum = 0;
   for (int y = 0; y < h_; ++y) {
@@ -123,8 +123,7 @@ float EnvironmentMap::pdf(const Vec3f& wi) const {
 
 // ---- sun
 SunLight::SunLight(const Vec3f& direction, float irradiance, float angle_deg, const Color& color)
-    : dir_(direction.normalized()), frame_(dir_), cos_max_(std::cos(radians(angle_deg * 0.5f))),
-      E_(color * irradiance) {
+    : dir_(direction.normalized()), frame_(dir_), cos_max_(std::cos(radians(angle_deg * 0.5f))), E_(color * irradiance) {
   const float sin2 = 1.0f - cos_max_ * cos_max_;
   // ∫_cone L cosθ' dω = L π sin²θmax for a surface facing the sun.
   L_ = sin2 > 0 ? Color(E_ / (kPi * sin2)) : E_;
@@ -181,9 +180,12 @@ Color preetham_radiance(const Vec3f& sun, float T, const Vec3f& d) {
   const float yz = T * T * (0.00275f * t3 - 0.00610f * t2 + 0.00317f * theta_s) +
                    T * (-0.04214f * t3 + 0.08970f * t2 - 0.04153f * theta_s + 0.00516f) +
                    (0.15346f * t3 - 0.26756f * t2 + 0.06670f * theta_s + 0.26688f);
-  const Perez pY{0.1787f * T - 1.4630f, -0.3554f * T + 0.4275f, -0.0227f * T + 5.3251f, 0.1206f * T - 2.5771f, -0.0670f * T + 0.3703f};
-  const Perez px{-0.0193f * T - 0.2592f, -0.0665f * T + 0.0008f, -0.0004f * T + 0.2125f, -0.0641f * T - 0.8989f, -0.0033f * T + 0.0452f};
-  const Perez py{-0.0167f * T - 0.2608f, -0.0950f * T + 0.0092f, -0.0079f * T + 0.2102f, -0.0441f * T - 1.6537f, -0.0109f * T + 0.0529f};
+  const Perez pY{0.1787f * T - 1.4630f, -0.3554f * T + 0.4275f, -0.0227f * T + 5.3251f, 0.1206f * T - 2.5771f,
+                 -0.0670f * T + 0.3703f};
+  const Perez px{-0.0193f * T - 0.2592f, -0.0665f * T + 0.0008f, -0.0004f * T + 0.2125f, -0.0641f * T - 0.8989f,
+                 -0.0033f * T + 0.0452f};
+  const Perez py{-0.0167f * T - 0.2608f, -0.0950f * T + 0.0092f, -0.0079f * T + 0.2102f, -0.0441f * T - 1.6537f,
+                 -0.0109f * T + 0.0529f};
   const Vec3f dd = Vec3f(d.x(), std::max(d.y(), 0.001f), d.z()).normalized();
   const float cos_t = dd.y();
   const float gamma = std::acos(std::clamp(dd.dot(sun), -1.0f, 1.0f));

@@ -6,16 +6,16 @@
 #include <optional>
 #include <vector>
 
-#include "util/math.h"
 #include "renderer/sampling.h"
+#include "util/math.h"
 
 namespace phellem {
 
 struct LightSample {
-  Color L;          // radiance arriving along -wi
-  Vec3f wi;         // unit direction from the shading point towards the light
-  float dist = 0;   // distance to the light point (infinity for infinite lights)
-  float pdf = 0;    // solid angle (ignored for delta lights)
+  Color L;         // radiance arriving along -wi
+  Vec3f wi;        // unit direction from the shading point towards the light
+  float dist = 0;  // distance to the light point (infinity for infinite lights)
+  float pdf = 0;   // solid angle (ignored for delta lights)
   bool delta = false;
 };
 
@@ -25,9 +25,15 @@ class Light {
   virtual bool infinite() const { return false; }
   virtual std::optional<LightSample> sample(const Vec3f& p, const Vec2f& u) const = 0;
   // Solid-angle pdf that sample() would produce direction wi (infinite lights only).
-  virtual float pdf(const Vec3f& wi) const { (void)wi; return 0; }
+  virtual float pdf(const Vec3f& wi) const {
+    (void)wi;
+    return 0;
+  }
   // Radiance seen along an escaped ray with direction `dir` (infinite lights only).
-  virtual Color Le(const Vec3f& dir) const { (void)dir; return Color::Zero(); }
+  virtual Color Le(const Vec3f& dir) const {
+    (void)dir;
+    return Color::Zero();
+  }
   // Sampling that knows the receiving surface's normal `n` (pointing to the side that can
   // receive light; zero when both sides can, e.g. for transmissive surfaces). Lights that
   // can use it sample only that hemisphere; the default ignores it.
@@ -117,8 +123,8 @@ class SunLight final : public Light {
 // 128 × 64 texels (2.8°) interpolated bilinearly resolve the sky's smooth gradients, and the
 // whole map with its sampling tables stays in L2 cache: at 512 × 256 escaped rays spent
 // more time in cache misses than in Embree (bench/run_throughput.sh: 6.1 -> 7.9 Mrays/s).
-std::unique_ptr<EnvironmentMap> make_preetham_sky(const Vec3f& sun_direction, float turbidity,
-                                                  float intensity, float ground_albedo, int width = 128);
+std::unique_ptr<EnvironmentMap> make_preetham_sky(const Vec3f& sun_direction, float turbidity, float intensity,
+                                                  float ground_albedo, int width = 128);
 // The sky's RGB radiance (before baking) in direction d; exposed for tests.
 Color preetham_radiance(const Vec3f& sun_direction, float turbidity, const Vec3f& d);
 

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "renderer/bsdf.h"
-#include "scene/scene_desc.h"
 #include "renderer/textures.h"
+#include "scene/scene_desc.h"
 
 namespace phellem {
 
@@ -22,8 +22,8 @@ Material compile_material(const MaterialDesc& d, TextureStore& textures);
 
 struct ShadingInput {
   Vec2f uv;
-  float footprint;       // texture filter width in uv units
-  bool primary = true;   // camera-ray hit: full-quality (bicubic) texture filtering
+  float footprint;                       // texture filter width in uv units
+  bool primary = true;                   // camera-ray hit: full-quality (bicubic) texture filtering
   const Color* base_override = nullptr;  // dressed bark albedo replacing the base colour
   float base_scale = 1.0f;               // multiplies the base colour (crack depth darkening)
 };

@@ -28,9 +28,7 @@ class GGX {
   float G1(const Vec3f& w) const { return 1.0f / (1.0f + lambda(w)); }
   float G(const Vec3f& wo, const Vec3f& wi) const { return 1.0f / (1.0f + lambda(wo) + lambda(wi)); }
   // Density of visible normals D_w(wm) = G1(w) max(0, w·wm) D(wm) / |w.z|.
-  float visible_pdf(const Vec3f& w, const Vec3f& wm) const {
-    return G1(w) / std::abs(w.z()) * D(wm) * std::abs(w.dot(wm));
-  }
+  float visible_pdf(const Vec3f& w, const Vec3f& wm) const { return G1(w) / std::abs(w.z()) * D(wm) * std::abs(w.dot(wm)); }
   // Samples a visible normal seen from w (w on either side; the sample faces w's side).
   Vec3f sample_visible(const Vec3f& w, const Vec2f& u) const {
     Vec3f wh = Vec3f(alpha_ * w.x(), alpha_ * w.y(), w.z()).normalized();

@@ -146,7 +146,8 @@ std::vector<AreaLights::Triangle> RenderScene::build_bvh(const SceneContents& c,
                            materials_[material].emission});
     return first;
   };
-  auto add_top = [&](std::shared_ptr<const MeshData> mesh, int material, int object_id, std::shared_ptr<const bark::BarkSurface> bark) {
+  auto add_top = [&](std::shared_ptr<const MeshData> mesh, int material, int object_id,
+                     std::shared_ptr<const bark::BarkSurface> bark) {
     const int area_first = add_area(*mesh, material);
     stats_.unique_triangles += mesh->triangle_count();
     stats_.triangles += mesh->triangle_count();
@@ -170,7 +171,8 @@ std::vector<AreaLights::Triangle> RenderScene::build_bvh(const SceneContents& c,
         break;
       case ScenePiece::Kind::Sphere: {
         RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        float* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+        float* v =
+            static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
         v[0] = piece.center.x();
         v[1] = piece.center.y();
         v[2] = piece.center.z();
@@ -224,8 +226,8 @@ std::vector<AreaLights::Triangle> RenderScene::build_bvh(const SceneContents& c,
   return area_tris;
 }
 
-std::unique_ptr<RenderScene> build_render_scene(const SceneDesc& desc, const BarkResults& bark, const CameraDesc& dicing, int width,
-                                                int height, bool progress) {
+std::unique_ptr<RenderScene> build_render_scene(const SceneDesc& desc, const BarkResults& bark, const CameraDesc& dicing,
+                                                int width, int height, bool progress) {
   return RenderScene::build(desc, bark, dicing, width, height, progress);
 }
 

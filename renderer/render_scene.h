@@ -12,14 +12,14 @@
 #include <vector>
 
 #include "bark/dressing/bark_surface.h"
+#include "bark/geometry/mesh_data.h"
 #include "renderer/camera.h"
 #include "renderer/light.h"
 #include "renderer/material.h"
 #include "renderer/scene_contents.h"
-#include "bark/geometry/mesh_data.h"
+#include "renderer/textures.h"
 #include "scene/bark_results.h"
 #include "scene/scene_desc.h"
-#include "renderer/textures.h"
 
 namespace phellem {
 
@@ -27,13 +27,13 @@ struct EmbreeErrors;
 
 struct SurfaceHit {
   float t = 0;
-  Vec3f p, ng, ns;   // world position, geometric and shading normal (unit; same side)
+  Vec3f p, ng, ns;  // world position, geometric and shading normal (unit; same side)
   Vec2f uv{0, 0};
   Vec4f tangent{1, 0, 0, 1};
   float uv_per_metre = 1.0f;  // for texture footprints
   int material = 0;
-  int object_id = 0;          // 1-based object index in the scene file
-  int area_light = -1;        // triangle index in the area lights, or -1
+  int object_id = 0;    // 1-based object index in the scene file
+  int area_light = -1;  // triangle index in the area lights, or -1
   // The object's BarkSurface (either bark model) shaded here: fracture coverage, normalized
   // depth, and either a dressed albedo replacing the material's base colour (`bark`) or a
   // depth darkening of it (`albedo_scale`).
@@ -44,14 +44,14 @@ struct SurfaceHit {
 };
 
 struct GeometryStats {
-  long long triangles = 0;          // all triangles in the Embree scene (instances counted once per instance)
-  long long unique_triangles = 0;   // stored triangles
-  long long diced_triangles = 0;    // produced by adaptive tessellation
-  size_t diced_bytes = 0;           // memory of the diced meshes
-  size_t geometry_bytes = 0;        // vertex/index/attribute arrays
-  size_t embree_bytes = 0;          // peak memory Embree allocated (BVH etc.)
+  long long triangles = 0;         // all triangles in the Embree scene (instances counted once per instance)
+  long long unique_triangles = 0;  // stored triangles
+  long long diced_triangles = 0;   // produced by adaptive tessellation
+  size_t diced_bytes = 0;          // memory of the diced meshes
+  size_t geometry_bytes = 0;       // vertex/index/attribute arrays
+  size_t embree_bytes = 0;         // peak memory Embree allocated (BVH etc.)
   double tessellate_s = 0, bvh_s = 0;
-  float dicing_scale = 1.0f;        // >1 when the triangle budget coarsened the dicing
+  float dicing_scale = 1.0f;  // >1 when the triangle budget coarsened the dicing
 };
 
 struct DeviceDeleter {
@@ -140,8 +140,8 @@ class RenderScene {
 };
 
 // The render scene of `desc` with bark already simulated.
-std::unique_ptr<RenderScene> build_render_scene(const SceneDesc& desc, const BarkResults& bark, const CameraDesc& dicing, int width,
-                                                int height, bool progress = false);
+std::unique_ptr<RenderScene> build_render_scene(const SceneDesc& desc, const BarkResults& bark, const CameraDesc& dicing,
+                                                int width, int height, bool progress = false);
 // Simulates the scene's bark first (tests, benchmarks, one-off renders).
 std::unique_ptr<RenderScene> build_render_scene(const SceneDesc& desc, const CameraDesc& dicing, int width, int height);
 

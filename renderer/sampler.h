@@ -11,8 +11,7 @@ namespace phellem {
 
 class Sampler {
  public:
-  Sampler(uint32_t px, uint32_t py, uint32_t sample_index, uint32_t seed)
-      : Sampler(hash_pixel(px, py, seed), sample_index) {}
+  Sampler(uint32_t px, uint32_t py, uint32_t sample_index, uint32_t seed) : Sampler(hash_pixel(px, py, seed), sample_index) {}
   // With the pixel's seed hashed once per pixel by the caller (hash_pixel).
   Sampler(uint32_t pixel_seed, uint32_t sample_index);
 

@@ -54,7 +54,9 @@ MeshData sphere_mesh(const Vec3f& c, float r) {
 
 const ObjectBark& bark_of(const BarkResults& bark, size_t oi, const ObjectDesc& o) {
   const ObjectBark* b = bark.find(oi);
-  if (!b) throw std::logic_error("object " + std::to_string(oi) + " (" + o.where.path + "): bark not simulated before the render scene");
+  if (!b)
+    throw std::logic_error("object " + std::to_string(oi) + " (" + o.where.path +
+                           "): bark not simulated before the render scene");
   return *b;
 }
 
@@ -208,7 +210,8 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
             for (auto& t : w.tangents) t.head<3>() = transform_vector(o.transform.matrix, t.head<3>()).normalized();
             if (w.normals.empty()) compute_vertex_normals(w);
             if (o.displacement.type != DisplacementDesc::Type::None)
-              add_job(resolve(m), object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement), nullptr);
+              add_job(resolve(m), object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement),
+                      nullptr);
             else
               add_mesh(std::move(w), resolve(m), object_id);
           }

@@ -24,11 +24,11 @@ struct ScenePiece {
   std::shared_ptr<const MeshData> mesh;  // Mesh (padded for Embree's 16-byte loads)
   Vec3f center{0, 0, 0};                 // Sphere
   float radius = 0;
-  int prototype = -1;                    // Instance: index into SceneContents::prototypes
+  int prototype = -1;  // Instance: index into SceneContents::prototypes
   Mat4f xf = Mat4f::Identity();
-  int material_override = -1;            // Instance: the object's material, or -1 (the file's)
+  int material_override = -1;  // Instance: the object's material, or -1 (the file's)
   int material = 0;
-  int object_id = 0;                     // 1-based object index in the scene file
+  int object_id = 0;                              // 1-based object index in the scene file
   std::shared_ptr<const bark::BarkSurface> bark;  // shades through MeshData::params
 };
 
@@ -43,9 +43,9 @@ struct MeshPrototype {
 struct DicingJob {
   int material = 0;
   int object_id = 0;
-  ParametricSurface surface;             // when `base` is null
+  ParametricSurface surface;  // when `base` is null
   std::shared_ptr<const MeshData> base;
-  DisplacementFn disp;                   // base mesh: procedural displacement
+  DisplacementFn disp;  // base mesh: procedural displacement
   // Base mesh with bark (stress bark's cracks): displacement that also writes the per-vertex
   // shading attributes, and the crack-aware dicing predicate.
   SurfaceDisplacementFn bark_disp = {};
@@ -54,10 +54,10 @@ struct DicingJob {
 };
 
 struct SceneContents {
-  std::vector<Material> materials;       // the scene's, a default grey, then each mesh file's
+  std::vector<Material> materials;  // the scene's, a default grey, then each mesh file's
   std::vector<ScenePiece> pieces;
   std::vector<MeshPrototype> prototypes;
-  std::vector<DicingJob> jobs;           // diced meshes are attached after `pieces`, in this order
+  std::vector<DicingJob> jobs;  // diced meshes are attached after `pieces`, in this order
 };
 
 // Every tree with strip bark and every stress-bark object must have its entry in `bark`.

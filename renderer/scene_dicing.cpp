@@ -26,7 +26,7 @@ DicedMeshes dice_jobs(const std::vector<DicingJob>& jobs, DicingParams dicing, l
   for (int iter = 0; iter < 8; ++iter) {
     long long estimate = 0;
     for (const auto& j : jobs)
-      estimate += !j.base ? estimate_triangles(j.surface, dicing)
+      estimate += !j.base       ? estimate_triangles(j.surface, dicing)
                   : j.bark_disp ? estimate_triangles(*j.base, j.bark_disp, with_refine(j))
                                 : estimate_triangles(*j.base, j.disp, dicing);
     if (estimate <= max_triangles) break;
@@ -36,7 +36,7 @@ DicedMeshes dice_jobs(const std::vector<DicingJob>& jobs, DicingParams dicing, l
   }
   out.meshes.reserve(jobs.size());
   for (const auto& j : jobs) {
-    out.meshes.push_back(!j.base ? dice(j.surface, dicing)
+    out.meshes.push_back(!j.base       ? dice(j.surface, dicing)
                          : j.bark_disp ? dice(*j.base, j.bark_disp, with_refine(j), true)
                                        : dice(*j.base, j.disp, dicing));
     progress.advance();

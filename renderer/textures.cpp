@@ -8,17 +8,16 @@
 #include <filesystem>
 #include <mutex>
 
+#include "io/image_limits.h"
+#include "io/image_output.h"
 #include "util/cache_dir.h"
 #include "util/errors.h"
 #include "util/hash.h"
-#include "io/image_limits.h"
-#include "io/image_output.h"
 #include "util/noise.h"
 
 namespace phellem {
 
 namespace fs = std::filesystem;
-
 
 namespace {
 

@@ -8,9 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "util/math.h"
 #include "scene/scene_desc.h"
-
+#include "util/math.h"
 
 namespace phellem {
 

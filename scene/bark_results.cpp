@@ -3,15 +3,13 @@
 #include <chrono>
 #include <optional>
 
-#include "scene/strip_bark_tree.h"
 #include "scene/stress_bark_run.h"
+#include "scene/strip_bark_tree.h"
 #include "util/hash.h"
 
 namespace phellem {
 
-bool has_simulated_bark(const ObjectDesc& o) {
-  return o.stress_bark || (o.type == ObjectType::Tree && o.tree.strip_bark);
-}
+bool has_simulated_bark(const ObjectDesc& o) { return o.stress_bark || (o.type == ObjectType::Tree && o.tree.strip_bark); }
 
 ObjectBark simulate_object_bark(const SceneDesc& desc, size_t object, bool progress) {
   const ObjectDesc& o = desc.objects.at(object);

@@ -18,7 +18,7 @@ namespace phellem {
 
 struct ObjectBark {
   std::vector<std::shared_ptr<const bark::FieldBarkSurface>> strip_parts;  // strip bark: one per tree part
-  std::shared_ptr<const bark::CrackedMesh> cracked;                       // stress bark
+  std::shared_ptr<const bark::CrackedMesh> cracked;                        // stress bark
 };
 
 struct BarkResults {

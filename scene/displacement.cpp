@@ -7,8 +7,7 @@ namespace phellem {
 
 DisplacementFn make_displacement(const DisplacementDesc& d) {
   const uint32_t seed = fold_seed(d.seed);  // the noise takes 32 bits; identity below 2^32
-  if (d.type == DisplacementDesc::Type::None || d.amplitude == 0.0f)
-    return [](const Vec2f&, const Vec3f&) { return 0.0f; };
+  if (d.type == DisplacementDesc::Type::None || d.amplitude == 0.0f) return [](const Vec2f&, const Vec3f&) { return 0.0f; };
   if (d.type == DisplacementDesc::Type::Noise) {
     return [d, seed](const Vec2f&, const Vec3f& p) { return d.amplitude * fbm(p * d.frequency, seed, 4); };
   }

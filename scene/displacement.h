@@ -2,8 +2,8 @@
 // The bark models later replace these with displacement from FractureField / CrackedMesh.
 #pragma once
 
-#include "scene/scene_desc.h"
 #include "bark/geometry/tessellation.h"
+#include "scene/scene_desc.h"
 
 namespace phellem {
 

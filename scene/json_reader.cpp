@@ -49,8 +49,12 @@ class PathTracker {
   bool event(nlohmann::json::parse_event_t e, const nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
     switch (e) {
-      case E::object_start: frames_.push_back({false, {}, {}, 0}); break;
-      case E::array_start: frames_.push_back({true, {}, {}, 0}); break;
+      case E::object_start:
+        frames_.push_back({false, {}, {}, 0});
+        break;
+      case E::array_start:
+        frames_.push_back({true, {}, {}, 0});
+        break;
       case E::key: {
         Frame& f = frames_.back();
         f.key = parsed.get<std::string>();
@@ -63,7 +67,9 @@ class PathTracker {
         frames_.pop_back();
         element_done();
         break;
-      case E::value: element_done(); break;
+      case E::value:
+        element_done();
+        break;
     }
     return true;
   }
@@ -94,9 +100,8 @@ class PathTracker {
 nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
   PathTracker tracker(file);
   try {
-    return nlohmann::json::parse(text, [&tracker](int, nlohmann::json::parse_event_t e, nlohmann::json& parsed) {
-      return tracker.event(e, parsed);
-    });
+    return nlohmann::json::parse(
+        text, [&tracker](int, nlohmann::json::parse_event_t e, nlohmann::json& parsed) { return tracker.event(e, parsed); });
   } catch (const nlohmann::json::parse_error& e) {
     // Convert the byte offset into line:column, which is what an editor shows.
     size_t line = 1, col = 1;
@@ -112,15 +117,15 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
     std::string msg = e.what();
     const auto pos = msg.find("syntax error");
     if (pos != std::string::npos) msg = msg.substr(pos);
-    throw UserError(file, "line " + std::to_string(line) + ", column " + std::to_string(col),
-                    "invalid JSON: " + msg);
+    throw UserError(file, "line " + std::to_string(line) + ", column " + std::to_string(col), "invalid JSON: " + msg);
   } catch (const nlohmann::json::out_of_range& e) {
     // 406: a literal such as 1e999 that overflows a double; the tracker knows whose it is.
     std::string msg = e.what(), literal;
     const auto q = msg.find('\'');
     if (e.id == 406 && q != std::string::npos) literal = msg.substr(q + 1, msg.rfind('\'') - q - 1);
     if (!literal.empty())
-      throw UserError(file, tracker.path().empty() ? "/" : tracker.path(), "number out of range: " + literal + "; " + kNumberRange);
+      throw UserError(file, tracker.path().empty() ? "/" : tracker.path(),
+                      "number out of range: " + literal + "; " + kNumberRange);
     const auto pos = msg.find(']');
     if (pos != std::string::npos) msg = msg.substr(pos + 2);
     throw UserError(file, tracker.path().empty() ? "/" : tracker.path(), "invalid JSON: " + msg);
@@ -129,8 +134,7 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
 
 JsonObject::JsonObject(const nlohmann::json& j, std::string file, std::string path)
     : j_(&j), file_(std::move(file)), path_(std::move(path)) {
-  if (!j.is_object())
-    throw UserError(file_, path_.empty() ? "/" : path_, "expected an object, found " + type_name(j));
+  if (!j.is_object()) throw UserError(file_, path_.empty() ? "/" : path_, "expected an object, found " + type_name(j));
 }
 
 JsonValue JsonObject::at(const std::string& key) {
@@ -244,8 +248,7 @@ std::string JsonValue::string() const {
 std::vector<float> JsonValue::numbers() const {
   if (!j_->is_array()) fail("expected an array of numbers, found " + type_name(*j_));
   std::vector<float> out;
-  for (size_t i = 0; i < j_->size(); ++i)
-    out.push_back(JsonValue((*j_)[i], file_, path_ + "/" + std::to_string(i)).number());
+  for (size_t i = 0; i < j_->size(); ++i) out.push_back(JsonValue((*j_)[i], file_, path_ + "/" + std::to_string(i)).number());
   return out;
 }
 Vec2f JsonValue::vec2() const {
@@ -267,8 +270,7 @@ JsonObject JsonValue::object() const { return JsonObject(*j_, file_, path_); }
 std::vector<JsonValue> JsonValue::array() const {
   if (!j_->is_array()) fail("expected an array, found " + type_name(*j_));
   std::vector<JsonValue> out;
-  for (size_t i = 0; i < j_->size(); ++i)
-    out.emplace_back((*j_)[i], file_, path_ + "/" + std::to_string(i));
+  for (size_t i = 0; i < j_->size(); ++i) out.emplace_back((*j_)[i], file_, path_ + "/" + std::to_string(i));
   return out;
 }
 

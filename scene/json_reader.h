@@ -28,7 +28,7 @@ class JsonObject {
   JsonObject(const nlohmann::json& j, std::string file, std::string path);
 
   bool has(const std::string& key) const { return j_->contains(key); }
-  JsonValue at(const std::string& key);  // required key
+  JsonValue at(const std::string& key);                  // required key
   std::optional<JsonValue> get(const std::string& key);  // optional key
 
   float number(const std::string& key, float fallback);
@@ -60,8 +60,8 @@ class JsonValue {
       : j_(&j), file_(std::move(file)), path_(std::move(path)) {}
 
   float number() const;
-  float positive() const;      // > 0
-  float non_negative() const;  // >= 0
+  float positive() const;             // > 0
+  float non_negative() const;         // >= 0
   int integer() const;                // a 32-bit signed integer
   int integer(int lo, int hi) const;  // an integer in [lo, hi]; the message states the range
   uint64_t seed() const;              // an integer in [0, 2^64 - 1], read exactly (kSeedRange)

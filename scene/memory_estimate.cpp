@@ -93,8 +93,10 @@ std::string num(double x) {
 
 std::string count(double x) {
   char buf[64];
-  if (x < 1e5) std::snprintf(buf, sizeof buf, "%.0f", x);
-  else std::snprintf(buf, sizeof buf, "%.2g", x);
+  if (x < 1e5)
+    std::snprintf(buf, sizeof buf, "%.0f", x);
+  else
+    std::snprintf(buf, sizeof buf, "%.2g", x);
   return buf;
 }
 
@@ -111,7 +113,8 @@ double mean_circumference(const bark::GeneralizedCylinder& c) {
   for (int i = 0; i < kSections; ++i) {
     const double u = (i + 0.5) / kSections;
     double sum = 0;
-    for (int k = 0; k < kChords; ++k) sum += (c.position(u, kTwoPi * (k + 1) / kChords) - c.position(u, kTwoPi * k / kChords)).norm();
+    for (int k = 0; k < kChords; ++k)
+      sum += (c.position(u, kTwoPi * (k + 1) / kChords) - c.position(u, kTwoPi * k / kChords)).norm();
     mean += sum / kSections;
   }
   return mean;
@@ -188,13 +191,15 @@ MemoryItem strip_sim_item(const ObjectDesc& o, size_t oi, const StripTreeCost& c
   const bark::StripParams& p = o.tree.strip_bark->params;
   MemoryItem m;
   m.bytes = c.sim();
-  m.what = "the strip simulation of " + object_name(o, oi, "tree") + " (" + std::to_string(c.parts) + (c.parts == 1 ? " limb: " : " limbs: ") +
-           count(c.strips) + " strips, " + count(c.elements) + " elements)";
+  m.what = "the strip simulation of " + object_name(o, oi, "tree") + " (" + std::to_string(c.parts) +
+           (c.parts == 1 ? " limb: " : " limbs: ") + count(c.strips) + " strips, " + count(c.elements) + " elements)";
   m.file = o.where.file;
   m.advice = "raise strip_width (now " + num(p.strip_width) + " m) or element_length (now " + num(p.element_length) + " m)";
   if (c.parts > 1) m.advice += ", or give the tree fewer or smaller branches";
-  if (c.parts > 1 && c.branch_bytes > 0.5 * m.bytes) m.where = path(oi, "/branches");
-  else m.where = path(oi, c.strips_bytes > c.elements_bytes ? "/bark/strip_width" : "/bark/element_length");
+  if (c.parts > 1 && c.branch_bytes > 0.5 * m.bytes)
+    m.where = path(oi, "/branches");
+  else
+    m.where = path(oi, c.strips_bytes > c.elements_bytes ? "/bark/strip_width" : "/bark/element_length");
   return m;
 }
 
@@ -234,7 +239,8 @@ LoadedCounts file_counts(const ObjectDesc& o) {
 DicingParams stress_tree_dicing(const ObjectDesc& o) {
   DicingParams d;
   d.screen_space = false;
-  d.target = o.stress_bark->preprocess.edge_length > 0 ? o.stress_bark->preprocess.edge_length : 2 * double(kPi) * o.tree.radius.front() / 100;
+  d.target = o.stress_bark->preprocess.edge_length > 0 ? o.stress_bark->preprocess.edge_length
+                                                       : 2 * double(kPi) * o.tree.radius.front() / 100;
   return d;
 }
 
@@ -278,8 +284,8 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
     if (n > double(bark::kMaxRemeshTriangles))
       throw UserError(o.where.file, path(oi, "/bark/preprocess/edge_length"),
                       "an edge length of " + std::to_string(s.preprocess.edge_length) + " m would make about " +
-                          std::to_string(static_cast<long long>(n)) + " triangles; at most " + std::to_string(bark::kMaxRemeshTriangles) +
-                          " are allowed (use a longer edge_length)");
+                          std::to_string(static_cast<long long>(n)) + " triangles; at most " +
+                          std::to_string(bark::kMaxRemeshTriangles) + " are allowed (use a longer edge_length)");
     m.where = path(oi, "/bark/preprocess/edge_length");
     m.advice = "raise preprocess edge_length (now " + num(s.preprocess.edge_length) + " m)";
   }
@@ -287,8 +293,8 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
   StressCost c;
   c.triangles = n + std::min(cracks, n);
   m.bytes = std::max(n_in, c.triangles) * (s.preprocess.enabled ? kStressBytesPerTriangle : kStressBytesPerTriangleRaw);
-  m.what = "the stress cracking of " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh") + " (about " + count(c.triangles) +
-           " triangles)";
+  m.what = "the stress cracking of " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh") + " (about " +
+           count(c.triangles) + " triangles)";
   c.item = m;
   return c;
 }
@@ -354,8 +360,10 @@ MemoryItem geometry_item(const SceneDesc& desc, int height, const std::map<size_
         n = file_counts(o).triangles;
         if (!displaced) files[o.file] = n;
       }
-      if (displaced) diced += displaced_mesh_triangles(o, n, d);
-      else stored += n;
+      if (displaced)
+        diced += displaced_mesh_triangles(o, n, d);
+      else
+        stored += n;
     }
   }
   MemoryItem m;
@@ -411,14 +419,16 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
       }
       m.items.push_back(f);
       if (req.meshes)
-        m.items.push_back({"the bark mesh of a limb of " + object_name(o, oi, "tree") + " (texels half a strip wide, at most 4096x4096)", mesh,
-                           "", "--no-mesh", "pass --no-mesh, or raise strip_width"});
+        m.items.push_back(
+            {"the bark mesh of a limb of " + object_name(o, oi, "tree") + " (texels half a strip wide, at most 4096x4096)", mesh,
+             "", "--no-mesh", "pass --no-mesh, or raise strip_width"});
       e.moments.push_back(std::move(m));
     }
     for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
       const ObjectDesc& o = desc.objects[oi];
       if (!o.stress_bark) continue;
-      e.moments.push_back({"cracking " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item(), stress_cost(o, oi).item}});
+      e.moments.push_back({"cracking " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"),
+                           {base_item(), stress_cost(o, oi).item}});
     }
     if (e.moments.empty()) e.moments.push_back({"simulating", {base_item()}});
     return e;
@@ -439,8 +449,8 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
       }
       const MemoryItem sim = strip_sim_item(o, oi, c);
       const MemoryItem kept = field_item(o, oi, "the dressed bark", texels * kSurfaceBytesPerTexel, c.field_size[k_largest]);
-      MemoryItem dressing = field_item(o, oi, "the fracture fields", texels * kSurfaceBytesPerTexel + largest * kFieldBytesPerTexel,
-                                       c.field_size[k_largest]);
+      MemoryItem dressing = field_item(o, oi, "the fracture fields",
+                                       texels * kSurfaceBytesPerTexel + largest * kFieldBytesPerTexel, c.field_size[k_largest]);
       if (req.command == MemoryCommand::Render) {
         MemoryMoment m{"simulating " + object_name(o, oi, "tree"), {base_item()}};
         m.items.insert(m.items.end(), surfaces.begin(), surfaces.end());
@@ -525,10 +535,20 @@ double parse_memory_size(const std::string& text) {
     if (x > 100) throw std::invalid_argument(text);
     return x / 100 * physical_memory();
   }
-  static const std::map<std::string, double> units = {
-      {"", 1},           {"B", 1},           {"K", 1024.0},     {"KB", 1024.0},     {"KIB", 1024.0},
-      {"M", 1048576.0},  {"MB", 1048576.0},  {"MIB", 1048576.0}, {"G", 1073741824.0}, {"GB", 1073741824.0},
-      {"GIB", 1073741824.0}, {"T", 1099511627776.0}, {"TB", 1099511627776.0}, {"TIB", 1099511627776.0}};
+  static const std::map<std::string, double> units = {{"", 1},
+                                                      {"B", 1},
+                                                      {"K", 1024.0},
+                                                      {"KB", 1024.0},
+                                                      {"KIB", 1024.0},
+                                                      {"M", 1048576.0},
+                                                      {"MB", 1048576.0},
+                                                      {"MIB", 1048576.0},
+                                                      {"G", 1073741824.0},
+                                                      {"GB", 1073741824.0},
+                                                      {"GIB", 1073741824.0},
+                                                      {"T", 1099511627776.0},
+                                                      {"TB", 1099511627776.0},
+                                                      {"TIB", 1099511627776.0}};
   auto it = units.find(unit);
   if (it == units.end()) throw std::invalid_argument(text);
   return x * it->second;
@@ -549,15 +569,17 @@ MemoryBudget memory_budget(const std::string& option) {
   }
   const double physical = physical_memory();
   char source[160];
-  std::snprintf(source, sizeof source, "%.0f%% of this machine's %s; --memory-limit or PHELLEM_MEMORY_LIMIT sets another", kDefaultMemoryShare * 100,
-                format_bytes(physical).c_str());
+  std::snprintf(source, sizeof source, "%.0f%% of this machine's %s; --memory-limit or PHELLEM_MEMORY_LIMIT sets another",
+                kDefaultMemoryShare * 100, format_bytes(physical).c_str());
   return {kDefaultMemoryShare * physical, source};
 }
 
 std::string format_bytes(double bytes) {
   char buf[64];
-  if (bytes >= 1073741824.0 * 0.95) std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / 1073741824.0);
-  else std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / 1048576.0);
+  if (bytes >= 1073741824.0 * 0.95)
+    std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / 1073741824.0);
+  else
+    std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / 1048576.0);
   return buf;
 }
 
@@ -588,8 +610,8 @@ std::string describe(const MemoryEstimate& estimate, const MemoryBudget& budget)
     }
   }
   const MemoryMoment& peak = estimate.peak();
-  s << "peak: about " << format_bytes(peak.bytes()) << " while " << peak.stage << "; allowed: " << format_bytes(budget.bytes) << " ("
-    << budget.source << ")\n";
+  s << "peak: about " << format_bytes(peak.bytes()) << " while " << peak.stage << "; allowed: " << format_bytes(budget.bytes)
+    << " (" << budget.source << ")\n";
   return s.str();
 }
 

@@ -17,7 +17,7 @@ namespace phellem {
 
 // One thing a stage holds, and the knob that bounds it.
 struct MemoryItem {
-  std::string what;    // e.g. "the strip simulation of \"tree\" (4 limbs: 1200 strips, 9.4e+04 elements)"
+  std::string what;  // e.g. "the strip simulation of \"tree\" (4 limbs: 1200 strips, 9.4e+04 elements)"
   double bytes = 0;
   std::string file;    // the scene file; empty: the command line
   std::string where;   // JSON path or option of the knob; empty: no knob (the program itself)
@@ -35,10 +35,10 @@ enum class MemoryCommand { Render, Growth, Simulate };  // turntable: Render (on
 
 struct MemoryRequest {
   MemoryCommand command = MemoryCommand::Render;
-  int height = 0;                          // render, growth: the film's height (screen-space dicing)
-  MemoryItem film;                         // render, growth: the film and its outputs (renderer/film_memory.h)
-  int field_width = 0, field_height = 0;   // simulate --res: every fracture field's size (0: the scene's)
-  bool meshes = true;                      // simulate: the bark meshes are written (no --no-mesh)
+  int height = 0;                         // render, growth: the film's height (screen-space dicing)
+  MemoryItem film;                        // render, growth: the film and its outputs (renderer/film_memory.h)
+  int field_width = 0, field_height = 0;  // simulate --res: every fracture field's size (0: the scene's)
+  bool meshes = true;                     // simulate: the bark meshes are written (no --no-mesh)
 };
 
 struct MemoryEstimate {

@@ -6,10 +6,10 @@
 
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/geometry/tube_junctions.h"
-#include "scene/displacement.h"
-#include "util/errors.h"
 #include "io/mesh_io.h"
+#include "scene/displacement.h"
 #include "scene/tree_surface.h"
+#include "util/errors.h"
 
 namespace phellem {
 
@@ -54,8 +54,8 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
     for (const TreePart& part : parts) estimate += estimate_triangles(part.surface, d);
     if (estimate > 20'000'000)
       throw UserError(o.where.file, o.where.path + "/bark/preprocess/edge_length",
-                      "an edge length of " + std::to_string(d.target) + " m would dice the tree into about " + std::to_string(estimate) +
-                          " triangles; at most 20000000 are allowed");
+                      "an edge length of " + std::to_string(d.target) + " m would dice the tree into about " +
+                          std::to_string(estimate) + " triangles; at most 20000000 are allowed");
     // Each part diced on its own, then joined at the branchings into one surface, so cracks
     // can run from the trunk into a branch.
     std::vector<bark::TriMesh> tubes;
@@ -65,13 +65,16 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
       bark::TriMesh& tube = tubes.emplace_back();
       for (const Vec3f& p : m.positions) tube.positions.push_back(p.cast<double>());
       for (size_t k = 0; k < m.positions.size(); ++k)
-        tube.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
-      for (size_t k = 0; k + 2 < m.indices.size(); k += 3) tube.triangles.push_back({m.indices[k], m.indices[k + 1], m.indices[k + 2]});
+        tube.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>())
+                                                              : Eigen::Vector2d::Zero());
+      for (size_t k = 0; k + 2 < m.indices.size(); k += 3)
+        tube.triangles.push_back({m.indices[k], m.indices[k + 1], m.indices[k + 2]});
       parent.push_back(part.parent);
     }
     bark::JoinedTubes joined = bark::join_tubes(tubes, parent);
     for (const std::string& why : joined.not_joined)
-      std::fprintf(stderr, "phellem: warning: %s: %s: %s; cracks stop at that junction\n", o.where.file.c_str(), o.where.path.c_str(), why.c_str());
+      std::fprintf(stderr, "phellem: warning: %s: %s: %s; cracks stop at that junction\n", o.where.file.c_str(),
+                   o.where.path.c_str(), why.c_str());
     return std::move(joined.mesh);  // trees carry no transform
   }
   if (o.procedural) {
@@ -83,7 +86,8 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
       for (const Vec3f& p : m.positions) t.positions.push_back(p.cast<double>());
       for (size_t k = 0; k < m.positions.size(); ++k)
         t.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
-      for (size_t k = 0; k + 2 < m.indices.size(); k += 3) t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
+      for (size_t k = 0; k + 2 < m.indices.size(); k += 3)
+        t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
     }
   }
   const Eigen::Matrix4d T = o.transform.matrix.cast<double>();

@@ -3,8 +3,8 @@
 // object's transform applied) or made from its procedural description.
 #pragma once
 
-#include "bark/geometry/tri_mesh.h"
 #include "bark/geometry/mesh_data.h"
+#include "bark/geometry/tri_mesh.h"
 #include "scene/scene_desc.h"
 
 namespace phellem {

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "io/material_desc.h"
+#include "scene/stress_bark_desc.h"
+#include "scene/strip_bark_desc.h"
 #include "util/errors.h"
 #include "util/math.h"
-#include "scene/strip_bark_desc.h"
-#include "scene/stress_bark_desc.h"
 
 namespace phellem {
 
@@ -35,12 +35,12 @@ struct FilterDesc {
 // Dicing of displaced / parametric surfaces (see renderer/tessellation.h).
 struct TessellationDesc {
   enum class Mode { Screen, Object } mode = Mode::Screen;
-  float pixels_per_edge = 1.0f;    // screen mode: target micro-triangle edge in pixels
-  float edge_length = 0.01f;       // object mode: target edge length in metres
-  float edge_length_scale = 1.0f;  // memory knob: multiplies the target edge
-  long long max_triangles = 20'000'000;  // memory knob: budget for all diced surfaces
+  float pixels_per_edge = 1.0f;             // screen mode: target micro-triangle edge in pixels
+  float edge_length = 0.01f;                // object mode: target edge length in metres
+  float edge_length_scale = 1.0f;           // memory knob: multiplies the target edge
+  long long max_triangles = 20'000'000;     // memory knob: budget for all diced surfaces
   std::optional<CameraDesc> dicing_camera;  // default: the render camera
-  bool crack_aware = true;  // stress-bark cracks: refine only the surface the cracks reach
+  bool crack_aware = true;                  // stress-bark cracks: refine only the surface the cracks reach
 };
 
 struct RenderDesc {
@@ -62,9 +62,9 @@ struct LightDesc {
   float rotation_deg = 0.0f;
   Vec3f direction{0, 1, 0};  // sun / sky: towards the sun (normalized)
   bool has_direction = false;
-  float irradiance = 1.0f;  // sun: irradiance on a surface facing it
-  float angle_deg = 0.53f;  // sun: angular diameter
-  float turbidity = 3.0f;   // sky
+  float irradiance = 1.0f;             // sun: irradiance on a surface facing it
+  float angle_deg = 0.53f;             // sun: angular diameter
+  float turbidity = 3.0f;              // sky
   std::optional<float> sky_intensity;  // sky: explicit scale (default: the sun's irradiance)
   float ground_albedo = 0.3f;          // sky: lower hemisphere
 };
@@ -72,11 +72,11 @@ struct LightDesc {
 // Procedural displacement along the normal, evaluated while dicing.
 struct DisplacementDesc {
   enum class Type { None, Grooves, Noise } type = Type::None;
-  float amplitude = 0.0f;  // metres; grooves cut inwards by up to this depth
-  float frequency = 12.0f; // grooves around the circumference / noise cycles per metre
-  float sharpness = 3.0f;  // grooves: ridge sharpness
-  float waviness = 0.3f;   // grooves: lateral wander of the furrows
-  uint64_t seed = 1;  // folded to the noise's 32 bits (fold_seed)
+  float amplitude = 0.0f;   // metres; grooves cut inwards by up to this depth
+  float frequency = 12.0f;  // grooves around the circumference / noise cycles per metre
+  float sharpness = 3.0f;   // grooves: ridge sharpness
+  float waviness = 0.3f;    // grooves: lateral wander of the furrows
+  uint64_t seed = 1;        // folded to the noise's 32 bits (fold_seed)
 };
 
 struct TransformDesc {
@@ -84,35 +84,35 @@ struct TransformDesc {
 };
 
 struct BranchDesc {
-  float attach = 0.5f;          // fraction of the parent's axis length
-  float azimuth_deg = 0.0f;     // around the parent's axis
-  float angle_deg = 45.0f;      // between parent axis and branch
+  float attach = 0.5f;       // fraction of the parent's axis length
+  float azimuth_deg = 0.0f;  // around the parent's axis
+  float angle_deg = 45.0f;   // between parent axis and branch
   float length = 1.0f;
-  std::vector<float> radius;    // radius profile, equally spaced along the branch
-  float curvature = 0.0f;       // upward bend (fraction of length)
+  std::vector<float> radius;  // radius profile, equally spaced along the branch
+  float curvature = 0.0f;     // upward bend (fraction of length)
   std::vector<BranchDesc> branches;
   Location where;
 };
 
 struct TreeDesc {
-  std::vector<Vec3f> axis;     // spline control points (Catmull-Rom through them)
+  std::vector<Vec3f> axis;                          // spline control points (Catmull-Rom through them)
   std::shared_ptr<const StripBarkDesc> strip_bark;  // `"bark": {"model": "strips"}`, if any
-  std::vector<float> radius;   // radius profile, equally spaced in arc length
+  std::vector<float> radius;                        // radius profile, equally spaced in arc length
   std::vector<BranchDesc> branches;
   DisplacementDesc displacement;
-  float uv_repeat = 1.0f;      // texture repeats around the circumference
+  float uv_repeat = 1.0f;  // texture repeats around the circumference
 };
 
 // A mesh made by Phellem instead of read from a file (bark/geometry/procedural_meshes.h):
 // `"procedural": {"shape": "trunk" | "torus_knot" | "vase" | "sheet" | "sphere", ...}`.
 struct ProceduralMeshDesc {
   std::string shape;
-  int triangles = 8000;     // approximate
-  float radius = 0.15f;     // trunk, vase (base), torus knot (overall), sphere
-  float height = 1.0f;      // trunk, vase, sheet (and its width)
-  float tube = 0.06f;       // torus knot
-  float jitter = 0.3f;      // trunk, vase, sheet: vertex jitter (fraction of the spacing)
-  uint64_t seed = 1;        // of the jitter
+  int triangles = 8000;  // approximate
+  float radius = 0.15f;  // trunk, vase (base), torus knot (overall), sphere
+  float height = 1.0f;   // trunk, vase, sheet (and its width)
+  float tube = 0.06f;    // torus knot
+  float jitter = 0.3f;   // trunk, vase, sheet: vertex jitter (fraction of the spacing)
+  uint64_t seed = 1;     // of the jitter
 };
 
 enum class ObjectType { Sphere, Plane, Mesh, Tree };

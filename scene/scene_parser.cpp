@@ -54,18 +54,28 @@ FilterDesc parse_filter(const JsonValue& v) {
   FilterDesc f;
   if (v.is_string()) {
     const std::string t = v.string();
-    if (t == "blackman-harris") f.type = FilterType::BlackmanHarris;
-    else if (t == "gaussian") f.type = FilterType::Gaussian;
-    else if (t == "box") { f.type = FilterType::Box; f.radius = 0.5f; }
-    else v.fail("unknown filter \"" + t + "\"; allowed: blackman-harris, gaussian, box");
+    if (t == "blackman-harris")
+      f.type = FilterType::BlackmanHarris;
+    else if (t == "gaussian")
+      f.type = FilterType::Gaussian;
+    else if (t == "box") {
+      f.type = FilterType::Box;
+      f.radius = 0.5f;
+    } else
+      v.fail("unknown filter \"" + t + "\"; allowed: blackman-harris, gaussian, box");
     return f;
   }
   JsonObject o = v.object();
   const std::string t = o.string("type", "blackman-harris");
-  if (t == "blackman-harris") f.type = FilterType::BlackmanHarris;
-  else if (t == "gaussian") f.type = FilterType::Gaussian;
-  else if (t == "box") { f.type = FilterType::Box; f.radius = 0.5f; }
-  else o.fail("type", "unknown filter \"" + t + "\"; allowed: blackman-harris, gaussian, box");
+  if (t == "blackman-harris")
+    f.type = FilterType::BlackmanHarris;
+  else if (t == "gaussian")
+    f.type = FilterType::Gaussian;
+  else if (t == "box") {
+    f.type = FilterType::Box;
+    f.radius = 0.5f;
+  } else
+    o.fail("type", "unknown filter \"" + t + "\"; allowed: blackman-harris, gaussian, box");
   if (auto r = o.get("radius")) {
     f.radius = r->positive();
     if (f.radius > 8.0f) r->fail("filter radius must be <= 8 pixels");
@@ -77,9 +87,12 @@ FilterDesc parse_filter(const JsonValue& v) {
 TessellationDesc parse_tessellation(JsonObject o) {
   TessellationDesc t;
   const std::string mode = o.string("mode", "screen");
-  if (mode == "screen") t.mode = TessellationDesc::Mode::Screen;
-  else if (mode == "object") t.mode = TessellationDesc::Mode::Object;
-  else o.fail("mode", "unknown mode \"" + mode + "\"; allowed: screen, object");
+  if (mode == "screen")
+    t.mode = TessellationDesc::Mode::Screen;
+  else if (mode == "object")
+    t.mode = TessellationDesc::Mode::Object;
+  else
+    o.fail("mode", "unknown mode \"" + mode + "\"; allowed: screen, object");
   if (auto v = o.get("pixels_per_edge")) t.pixels_per_edge = v->positive();
   if (auto v = o.get("edge_length")) t.edge_length = v->positive();
   if (auto v = o.get("edge_length_scale")) t.edge_length_scale = v->positive();
@@ -101,8 +114,7 @@ RenderDesc parse_render(JsonObject o) {
     if (a.size() != 2) v->fail("expected [width, height]");
     r.width = a[0].integer();
     r.height = a[1].integer();
-    if (r.width < 1 || r.height < 1 || r.width > 32768 || r.height > 32768)
-      v->fail("width and height must lie in [1, 32768]");
+    if (r.width < 1 || r.height < 1 || r.width > 32768 || r.height > 32768) v->fail("width and height must lie in [1, 32768]");
   }
   if (auto v = o.get("spp")) r.spp = v->integer(1, 1 << 20);
   if (auto v = o.get("max_depth")) r.max_depth = v->integer(1, 1024);
@@ -159,7 +171,8 @@ LightDesc parse_light(const Ctx& c, JsonObject o) {
       if (l.ground_albedo > 1.0f) v->fail("must lie in [0, 1]");
     }
   } else {
-    o.fail("type", "unknown light type \"" + type + "\"; allowed: environment, sun, sky (emissive meshes are lights through an emissive material)");
+    o.fail("type", "unknown light type \"" + type +
+                       "\"; allowed: environment, sun, sky (emissive meshes are lights through an emissive material)");
   }
   o.finish();
   return l;
@@ -195,12 +208,18 @@ MaterialDesc parse_material(const Ctx& c, const std::string& name, JsonObject o)
   m.name = name;
   m.where = loc(c, o.path());
   const std::string type = o.string("type");
-  if (type == "diffuse") m.type = MaterialType::Diffuse;
-  else if (type == "bark") m.type = MaterialType::Bark;
-  else if (type == "conductor") m.type = MaterialType::Conductor;
-  else if (type == "dielectric") m.type = MaterialType::Dielectric;
-  else if (type == "emissive") m.type = MaterialType::Emissive;
-  else o.fail("type", "unknown material type \"" + type + "\"; allowed: diffuse, bark, conductor, dielectric, emissive");
+  if (type == "diffuse")
+    m.type = MaterialType::Diffuse;
+  else if (type == "bark")
+    m.type = MaterialType::Bark;
+  else if (type == "conductor")
+    m.type = MaterialType::Conductor;
+  else if (type == "dielectric")
+    m.type = MaterialType::Dielectric;
+  else if (type == "emissive")
+    m.type = MaterialType::Emissive;
+  else
+    o.fail("type", "unknown material type \"" + type + "\"; allowed: diffuse, bark, conductor, dielectric, emissive");
 
   auto unit_color = [&](const std::string& key, Color fallback) {
     auto v = o.get(key);
@@ -257,8 +276,10 @@ Mat4f parse_transform(JsonObject o) {
   Vec3f r = o.vec3("rotate_deg", Vec3f::Zero());
   Vec3f s(1, 1, 1);
   if (auto sv = o.get("scale")) {
-    if (sv->is_number()) s = Vec3f::Constant(sv->positive());
-    else s = sv->vec3();
+    if (sv->is_number())
+      s = Vec3f::Constant(sv->positive());
+    else
+      s = sv->vec3();
     if ((s.array() == 0.0f).any()) sv->fail("scale components must be non-zero");
   }
   o.finish();
@@ -275,10 +296,14 @@ Mat4f parse_transform(JsonObject o) {
 DisplacementDesc parse_displacement(JsonObject o) {
   DisplacementDesc d;
   const std::string type = o.string("type");
-  if (type == "grooves") d.type = DisplacementDesc::Type::Grooves;
-  else if (type == "noise") d.type = DisplacementDesc::Type::Noise;
-  else if (type == "none") d.type = DisplacementDesc::Type::None;
-  else o.fail("type", "unknown displacement \"" + type + "\"; allowed: none, grooves, noise");
+  if (type == "grooves")
+    d.type = DisplacementDesc::Type::Grooves;
+  else if (type == "noise")
+    d.type = DisplacementDesc::Type::Noise;
+  else if (type == "none")
+    d.type = DisplacementDesc::Type::None;
+  else
+    o.fail("type", "unknown displacement \"" + type + "\"; allowed: none, grooves, noise");
   if (auto v = o.get("amplitude")) d.amplitude = v->non_negative();
   if (auto v = o.get("frequency")) d.frequency = v->positive();
   if (auto v = o.get("sharpness")) d.sharpness = v->positive();
@@ -296,7 +321,8 @@ std::vector<float> parse_radius_profile(const JsonValue& v) {
     r = v.numbers();
     if (r.empty()) v.fail("radius profile must not be empty");
     for (size_t i = 0; i < r.size(); ++i)
-      if (!(r[i] > 0.0f)) throw UserError(v.file(), v.path() + "/" + std::to_string(i), "radius must be > 0, found " + std::to_string(r[i]));
+      if (!(r[i] > 0.0f))
+        throw UserError(v.file(), v.path() + "/" + std::to_string(i), "radius must be > 0, found " + std::to_string(r[i]));
   }
   if (r.size() == 1) r.push_back(r[0]);
   return r;
@@ -395,7 +421,8 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
     }
     d.normal.normalize();
     if (auto s = o.get("size")) {
-      if (s->is_number()) d.size = Vec2f::Constant(s->positive());
+      if (s->is_number())
+        d.size = Vec2f::Constant(s->positive());
       else {
         d.size = s->vec2();
         if ((d.size.array() <= 0.0f).any()) s->fail("size must be > 0");
@@ -404,18 +431,21 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
     if (auto v = o.get("uv_scale")) d.uv_scale = v->positive();
   } else if (type == "mesh") {
     d.type = ObjectType::Mesh;
-    if (o.has("file") == o.has("procedural")) o.fail(o.has("file") ? "procedural" : "", "a mesh has either \"file\" or \"procedural\"");
+    if (o.has("file") == o.has("procedural"))
+      o.fail(o.has("file") ? "procedural" : "", "a mesh has either \"file\" or \"procedural\"");
     if (auto f = o.get("file")) {
       d.file = c.resolve(*f);
       const std::string ext = fs::path(d.file).extension().string();
-      if (ext != ".gltf" && ext != ".glb" && ext != ".obj") f->fail("unsupported mesh format \"" + ext + "\"; allowed: .gltf, .glb, .obj");
+      if (ext != ".gltf" && ext != ".glb" && ext != ".obj")
+        f->fail("unsupported mesh format \"" + ext + "\"; allowed: .gltf, .glb, .obj");
     } else {
       d.procedural = parse_procedural(o.at("procedural").object());
     }
     if (auto t = o.get("transform")) d.transform.matrix = parse_transform(t->object());
     if (auto b = o.get("bark")) {
       JsonObject bo = b->object();
-      if (bo.string("model", "") == "strips") bo.fail("model", "the strip model needs a tree object (generalized cylinders); on meshes use \"stress\"");
+      if (bo.string("model", "") == "strips")
+        bo.fail("model", "the strip model needs a tree object (generalized cylinders); on meshes use \"stress\"");
       d.stress_bark = std::make_shared<StressBarkDesc>(parse_stress_bark(b->object(), c.base_dir.string(), scene.render.seed));
     }
   } else if (type == "tree") {
@@ -468,7 +498,8 @@ SceneDesc parse_scene(const std::string& text, const std::string& file, const fs
         l.has_direction = true;
         break;
       }
-    if (!l.has_direction) throw UserError(file, l.where.path + "/sun_direction", "a sky needs a sun_direction or a sun light in the scene");
+    if (!l.has_direction)
+      throw UserError(file, l.where.path + "/sun_direction", "a sky needs a sun_direction or a sun light in the scene");
   }
   return s;
 }
@@ -481,14 +512,18 @@ SceneDesc load_scene_file(const std::string& path) {
     throw UserError(path, "open", std::string("cannot open scene file: ") + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) throw UserError(path, "open", "is a folder, not a scene file");
   if (!S_ISREG(st.st_mode))
-    throw UserError(path, "open", std::string("is not a regular file (") +
-                                  (S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISCHR(st.st_mode) ? "a character device"
-                                                                   : S_ISBLK(st.st_mode) ? "a block device"
-                                                                   : S_ISSOCK(st.st_mode) ? "a socket" : "not a file") +
-                                  "); a scene is read from a regular file");
+    throw UserError(path, "open",
+                    std::string("is not a regular file (") +
+                        (S_ISFIFO(st.st_mode)   ? "a FIFO"
+                         : S_ISCHR(st.st_mode)  ? "a character device"
+                         : S_ISBLK(st.st_mode)  ? "a block device"
+                         : S_ISSOCK(st.st_mode) ? "a socket"
+                                                : "not a file") +
+                        "); a scene is read from a regular file");
   if (uint64_t(st.st_size) > kMaxSceneFileBytes)
-    throw UserError(path, "size", "the scene file is " + std::to_string(uint64_t(st.st_size)) + " bytes; at most " +
-                                  std::to_string(kMaxSceneFileBytes) + " (64 MiB) are read (meshes and images belong in their own files)");
+    throw UserError(path, "size",
+                    "the scene file is " + std::to_string(uint64_t(st.st_size)) + " bytes; at most " +
+                        std::to_string(kMaxSceneFileBytes) + " (64 MiB) are read (meshes and images belong in their own files)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(path, "open", std::string("cannot open scene file: ") + std::strerror(errno));
   // Read at most one byte past the limit: a file that grew since stat is refused too.
@@ -501,7 +536,8 @@ SceneDesc load_scene_file(const std::string& path) {
     in.read(more.data(), std::streamsize(more.size()));
     text.append(more.data(), size_t(in.gcount()));
     if (text.size() > kMaxSceneFileBytes)
-      throw UserError(path, "read", "the scene file grew past " + std::to_string(kMaxSceneFileBytes) + " bytes while it was read");
+      throw UserError(path, "read",
+                      "the scene file grew past " + std::to_string(kMaxSceneFileBytes) + " bytes while it was read");
   }
   fs::path base = fs::absolute(fs::path(path)).parent_path();
   return parse_scene(text, path, base);

@@ -16,8 +16,7 @@ constexpr uint64_t kMaxSceneFileBytes = uint64_t(64) << 20;
 SceneDesc load_scene_file(const std::string& path);
 
 // Parses scene JSON text. `file` names it in messages; relative paths resolve against base_dir.
-SceneDesc parse_scene(const std::string& text, const std::string& file,
-                      const std::filesystem::path& base_dir);
+SceneDesc parse_scene(const std::string& text, const std::string& file, const std::filesystem::path& base_dir);
 
 // The embedded default scene: a bark-textured trunk on a ground plane under daylight.
 SceneDesc default_scene();

@@ -32,7 +32,8 @@ bark::StressImage read_stress_image(const JsonValue& v, const std::string& base_
 bark::StressStroke read_stroke(JsonObject o) {
   bark::StressStroke s;
   const bool uv = o.has("uv"), points = o.has("points");
-  if (uv == points) o.fail(uv ? "points" : "", "a stroke has either \"uv\" (2D points in texture space) or \"points\" (3D points on the mesh)");
+  if (uv == points)
+    o.fail(uv ? "points" : "", "a stroke has either \"uv\" (2D points in texture space) or \"points\" (3D points on the mesh)");
   s.in_uv = uv;
   auto list = o.at(uv ? "uv" : "points");
   for (auto& e : list.array()) {
@@ -73,14 +74,22 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
   p.seed = default_seed;
   if (auto v = o.get("pattern")) {
     const std::string s = v->string();
-    if (s == "uniform") p.pattern = bark::StressPattern::UniformTension;
-    else if (s == "horizontal") p.pattern = bark::StressPattern::Horizontal;
-    else if (s == "vertical") p.pattern = bark::StressPattern::Vertical;
-    else if (s == "mixed") p.pattern = bark::StressPattern::Mixed;
-    else if (s == "image") p.pattern = bark::StressPattern::Image;
-    else if (s == "strokes") p.pattern = bark::StressPattern::Strokes;
-    else if (s == "growth") p.pattern = bark::StressPattern::Growth;
-    else v->fail("unknown stress pattern \"" + s + "\"; allowed: uniform, horizontal, vertical, mixed, image, strokes, growth");
+    if (s == "uniform")
+      p.pattern = bark::StressPattern::UniformTension;
+    else if (s == "horizontal")
+      p.pattern = bark::StressPattern::Horizontal;
+    else if (s == "vertical")
+      p.pattern = bark::StressPattern::Vertical;
+    else if (s == "mixed")
+      p.pattern = bark::StressPattern::Mixed;
+    else if (s == "image")
+      p.pattern = bark::StressPattern::Image;
+    else if (s == "strokes")
+      p.pattern = bark::StressPattern::Strokes;
+    else if (s == "growth")
+      p.pattern = bark::StressPattern::Growth;
+    else
+      v->fail("unknown stress pattern \"" + s + "\"; allowed: uniform, horizontal, vertical, mixed, image, strokes, growth");
   }
   if (auto v = o.get("iterations")) p.iterations = v->integer();
   if (auto v = o.get("cracks_per_iteration")) p.cracks_per_iteration = v->integer();

@@ -15,8 +15,8 @@ class JsonObject;
 // Preprocessing (sec. 3.1.4: remove regularity and slivers before cracking).
 struct StressPreprocess {
   bool enabled = true;
-  float edge_length = 0;   // target edge length (m); 0: the input's mean edge length
-  float jitter = 0.3f;     // random tangential displacement, fraction of the edge length
+  float edge_length = 0;  // target edge length (m); 0: the input's mean edge length
+  float jitter = 0.3f;    // random tangential displacement, fraction of the edge length
 };
 
 struct StressBarkDesc {

@@ -3,8 +3,8 @@
 #include <chrono>
 
 #include "bark/geometry/irregular_remesh.h"
-#include "util/errors.h"
 #include "scene/mesh_source.h"
+#include "util/errors.h"
 #include "util/progress.h"
 
 namespace phellem {

@@ -153,11 +153,16 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint64
   if (auto v = o.get("depth")) {
     JsonObject m = v->object();
     const std::string shape = m.string("profile", "u");
-    if (shape == "v") d.depth.shape = bark::DepthProfileShape::V;
-    else if (shape == "u") d.depth.shape = bark::DepthProfileShape::U;
-    else if (shape == "box") d.depth.shape = bark::DepthProfileShape::Box;
-    else if (shape == "round") d.depth.shape = bark::DepthProfileShape::Round;
-    else m.fail("profile", "unknown depth profile \"" + shape + "\"; allowed: v, u, box, round");
+    if (shape == "v")
+      d.depth.shape = bark::DepthProfileShape::V;
+    else if (shape == "u")
+      d.depth.shape = bark::DepthProfileShape::U;
+    else if (shape == "box")
+      d.depth.shape = bark::DepthProfileShape::Box;
+    else if (shape == "round")
+      d.depth.shape = bark::DepthProfileShape::Round;
+    else
+      m.fail("profile", "unknown depth profile \"" + shape + "\"; allowed: v, u, box, round");
     if (auto w = m.get("max_depth")) d.depth.max_depth = w->positive();
     if (auto w = m.get("depth_per_width")) d.depth.depth_per_width = w->positive();
     m.finish();

@@ -16,7 +16,7 @@ struct StripBarkDesc {
   std::string preset;
   bark::StripParams params;
   bark::DepthProfile depth;
-  bark::FieldColors colors;  // dressing samples and depth darkening
+  bark::FieldColors colors;               // dressing samples and depth darkening
   int field_width = 0, field_height = 0;  // FractureField resolution per cylinder (0: automatic)
 };
 

@@ -6,7 +6,8 @@ namespace {
 
 using bark::GeneralizedCylinder;
 
-TreePart make_part(std::shared_ptr<const GeneralizedCylinder> cyl, const DisplacementFn& disp, float uv_repeat, float mean_radius) {
+TreePart make_part(std::shared_ptr<const GeneralizedCylinder> cyl, const DisplacementFn& disp, float uv_repeat,
+                   float mean_radius) {
   TreePart part;
   part.cylinder = cyl;
   const float L = float(cyl->length());

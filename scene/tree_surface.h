@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "bark/geometry/generalized_cylinder.h"
-#include "scene/scene_desc.h"
 #include "bark/geometry/tessellation.h"
+#include "scene/scene_desc.h"
 
 namespace phellem {
 

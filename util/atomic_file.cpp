@@ -16,7 +16,9 @@ void ensure_parent_dir(const std::string& path) {
   if (parent.empty()) return;
   std::error_code ec;
   fs::create_directories(parent, ec);
-  if (ec || !fs::is_directory(parent)) throw UserError(path, "output folder", "cannot create " + parent.string() + ": " + (ec ? ec.message() : "a file of that name is in the way"));
+  if (ec || !fs::is_directory(parent))
+    throw UserError(path, "output folder",
+                    "cannot create " + parent.string() + ": " + (ec ? ec.message() : "a file of that name is in the way"));
 }
 
 std::string temp_path_beside(const std::string& path) {

@@ -14,14 +14,13 @@ struct Location {
   std::string path;  // JSON path, e.g. /objects/2/radius
 };
 
-
 // Bad user input: a scene, a mesh, an image, a parameter out of range. `file` names the file,
 // `where` the JSON path or glTF element, `what` what is wrong and what is allowed.
 class UserError : public std::runtime_error {
  public:
   UserError(std::string file, std::string where, std::string what)
-      : std::runtime_error(compose(file, where, what)),
-        file_(std::move(file)), where_(std::move(where)), what_(std::move(what)) {}
+      : std::runtime_error(compose(file, where, what)), file_(std::move(file)), where_(std::move(where)), what_(std::move(what)) {
+  }
   const std::string& file() const { return file_; }
   const std::string& where() const { return where_; }
   const std::string& detail() const { return what_; }
@@ -50,9 +49,12 @@ inline std::string printable(std::string_view text) {
   for (size_t i = 0; i < text.size();) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c < 0x80) {
-      if (c < 0x20 && c != '\n' && c != '\t') escape(c);
-      else if (c == 0x7F) escape(c);
-      else out += char(c);
+      if (c < 0x20 && c != '\n' && c != '\t')
+        escape(c);
+      else if (c == 0x7F)
+        escape(c);
+      else
+        out += char(c);
       ++i;
       continue;
     }
@@ -60,9 +62,12 @@ inline std::string printable(std::string_view text) {
     // (overlong forms, surrogates and code points above U+10FFFF are invalid).
     size_t len = 0;
     unsigned char lo = 0x80, hi = 0xBF;
-    if (c >= 0xC2 && c <= 0xDF) len = 2;
-    else if (c >= 0xE0 && c <= 0xEF) len = 3, lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
-    else if (c >= 0xF0 && c <= 0xF4) len = 4, lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+    if (c >= 0xC2 && c <= 0xDF)
+      len = 2;
+    else if (c >= 0xE0 && c <= 0xEF)
+      len = 3, lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+    else if (c >= 0xF0 && c <= 0xF4)
+      len = 4, lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
     bool valid = len > 0 && i + len <= text.size();
     for (size_t k = 1; valid && k < len; ++k) {
       const auto b = static_cast<unsigned char>(text[i + k]);

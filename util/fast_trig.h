@@ -14,8 +14,11 @@ namespace phellem {
 // acos(x) for x ∈ [-1, 1] (A&S 4.4.46).
 inline float fast_acos(float x) {
   const float a = std::min(std::abs(x), 1.0f);
-  const float p = 1.5707963050f + a * (-0.2145988016f + a * (0.0889789874f + a * (-0.0501743046f +
-                  a * (0.0308918810f + a * (-0.0170881256f + a * (0.0066700901f + a * -0.0012624911f))))));
+  const float p =
+      1.5707963050f +
+      a * (-0.2145988016f +
+           a * (0.0889789874f +
+                a * (-0.0501743046f + a * (0.0308918810f + a * (-0.0170881256f + a * (0.0066700901f + a * -0.0012624911f))))));
   const float r = std::sqrt(1.0f - a) * p;
   return x < 0 ? kPi - r : r;
 }
@@ -26,8 +29,13 @@ inline float fast_atan2(float y, float x) {
   const float hi = std::max(ax, ay), lo = std::min(ax, ay);
   if (hi == 0) return 0;
   const float t = lo / hi, t2 = t * t;
-  float r = t * (1.0f + t2 * (-0.3333314528f + t2 * (0.1999355085f + t2 * (-0.1420889944f + t2 * (0.1065626393f +
-                t2 * (-0.0752896400f + t2 * (0.0429096138f + t2 * (-0.0161657367f + t2 * 0.0028662257f))))))));
+  float r =
+      t * (1.0f +
+           t2 * (-0.3333314528f +
+                 t2 * (0.1999355085f +
+                       t2 * (-0.1420889944f +
+                             t2 * (0.1065626393f +
+                                   t2 * (-0.0752896400f + t2 * (0.0429096138f + t2 * (-0.0161657367f + t2 * 0.0028662257f))))))));
   if (ay > ax) r = 0.5f * kPi - r;
   if (x < 0) r = kPi - r;
   return std::copysign(r, y);
@@ -42,10 +50,22 @@ inline void fast_sincos(float x, float* sin_out, float* cos_out) {
   const float s = r * (1.0f + r2 * (-1.0f / 6 + r2 * (1.0f / 120 + r2 * (-1.0f / 5040 + r2 * (1.0f / 362880)))));
   const float c = 1.0f + r2 * (-0.5f + r2 * (1.0f / 24 + r2 * (-1.0f / 720 + r2 * (1.0f / 40320 + r2 * (-1.0f / 3628800)))));
   switch (int(q) & 3) {
-    case 0: *sin_out = s; *cos_out = c; break;
-    case 1: *sin_out = c; *cos_out = -s; break;
-    case 2: *sin_out = -s; *cos_out = -c; break;
-    default: *sin_out = -c; *cos_out = s; break;
+    case 0:
+      *sin_out = s;
+      *cos_out = c;
+      break;
+    case 1:
+      *sin_out = c;
+      *cos_out = -s;
+      break;
+    case 2:
+      *sin_out = -s;
+      *cos_out = -c;
+      break;
+    default:
+      *sin_out = -c;
+      *cos_out = s;
+      break;
   }
 }
 

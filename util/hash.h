@@ -15,9 +15,7 @@ inline uint32_t hash_u32(uint32_t x) {
   return x;
 }
 
-inline uint32_t hash_combine(uint32_t seed, uint32_t v) {
-  return hash_u32(seed ^ (v + 0x9e3779b9U + (seed << 6) + (seed >> 2)));
-}
+inline uint32_t hash_combine(uint32_t seed, uint32_t v) { return hash_u32(seed ^ (v + 0x9e3779b9U + (seed << 6) + (seed >> 2))); }
 
 template <typename... Rest>
 inline uint32_t hash_all(uint32_t a, Rest... rest) {

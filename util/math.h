@@ -54,9 +54,7 @@ struct Frame {
   Vec3f to_world(const Vec3f& v) const { return s * v.x() + t * v.y() + n * v.z(); }
 };
 
-inline Vec3f transform_point(const Mat4f& m, const Vec3f& p) {
-  return (m.topLeftCorner<3, 3>() * p + m.topRightCorner<3, 1>());
-}
+inline Vec3f transform_point(const Mat4f& m, const Vec3f& p) { return (m.topLeftCorner<3, 3>() * p + m.topRightCorner<3, 1>()); }
 inline Vec3f transform_vector(const Mat4f& m, const Vec3f& v) { return m.topLeftCorner<3, 3>() * v; }
 
 // Offset a ray origin off a surface so that the spawned ray does not re-hit it; the offset

@@ -10,8 +10,8 @@ inline float fade(float t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 
 // The 12 cube-edge gradients of improved Perlin noise, looked up (a switch on random
 // hashes mispredicts most of its branches).
-constexpr float kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1}, {-1, 0, 1},
-                                     {1, 0, -1}, {-1, 0, -1}, {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
+constexpr float kGradients[12][3] = {{1, 1, 0},  {-1, 1, 0},  {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1},
+                                     {1, 0, -1}, {-1, 0, -1}, {0, 1, 1},  {0, -1, 1},  {0, 1, -1}, {0, -1, -1}};
 
 inline float grad(uint32_t h, float x, float y, float z) {
   const float* g = kGradients[(uint64_t(h) * 12u) >> 32];  // uniform in [0, 12) without a division

@@ -10,7 +10,7 @@
 
 namespace phellem {
 
-float gradient_noise(const Vec3f& p, uint32_t seed);                // in about [-1, 1]
+float gradient_noise(const Vec3f& p, uint32_t seed);                       // in about [-1, 1]
 float fbm(const Vec3f& p, uint32_t seed, int octaves, float gain = 0.5f);  // in about [-1, 1]
 // fbm band-limited to a filter width of `footprint` lattice cells (of the first octave):
 // octaves finer than the Nyquist limit are faded out and replaced by their mean, 0

@@ -36,13 +36,15 @@ fs::path folder_of(const fs::path& path) {
 }
 
 // UserError(path, option, ...) unless `folder` is a folder this process may write in.
-void require_writable_folder(const std::string& path, const std::string& option, const fs::path& folder, const std::string& missing) {
+void require_writable_folder(const std::string& path, const std::string& option, const fs::path& folder,
+                             const std::string& missing) {
   std::error_code ec;
   const fs::file_status st = fs::status(folder, ec);
   if (st.type() == fs::file_type::not_found) throw UserError(path, option, missing);
   if (ec) throw UserError(path, option, "cannot reach folder " + folder.string() + ": " + ec.message());
   if (!fs::is_directory(st)) throw UserError(path, option, folder.string() + " is not a folder");
-  if (access(folder.c_str(), W_OK | X_OK) != 0) throw UserError(path, option, "cannot write in folder " + folder.string() + ": " + std::strerror(errno));
+  if (access(folder.c_str(), W_OK | X_OK) != 0)
+    throw UserError(path, option, "cannot write in folder " + folder.string() + ": " + std::strerror(errno));
 }
 
 }  // namespace
@@ -74,7 +76,8 @@ OutputSet::File& OutputSet::add_file(const std::string& option, const std::strin
   if (const Folder* d = find_folder(key)) throw UserError(path, option, "the same path as the folder of " + d->option);
   const fs::path folder = folder_of(path);
   // A folder the run makes itself need not exist yet.
-  if (!find_folder(key_of(folder)) || fs::exists(folder, ec)) require_writable_folder(path, option, folder, "folder does not exist");
+  if (!find_folder(key_of(folder)) || fs::exists(folder, ec))
+    require_writable_folder(path, option, folder, "folder does not exist");
   files_.push_back(File{option, path, key, {}, {}, false});
   file_at_[key] = files_.size() - 1;
   return files_.back();
@@ -105,7 +108,8 @@ void OutputSet::expect_folder(const std::string& option, const std::string& path
   folders_.push_back(Folder{option, path, key, {}, false});
 }
 
-void OutputSet::write(const std::string& option, const std::string& path, const std::function<void(const std::string& tmp)>& write) {
+void OutputSet::write(const std::string& option, const std::string& path,
+                      const std::function<void(const std::string& tmp)>& write) {
   const std::string tmp = stage(option, path);
   try {
     write(tmp);

@@ -52,7 +52,7 @@ class OutputSet {
   // Checks a file not in the set yet and adds it.
   File& add_file(const std::string& option, const std::string& path, const std::string& key);
 
-  std::vector<File> files_;  // in the order they are committed
+  std::vector<File> files_;                          // in the order they are committed
   std::unordered_map<std::string, size_t> file_at_;  // key -> index in files_
   std::vector<Folder> folders_;
   bool committed_ = false;

@@ -43,9 +43,12 @@ void Progress::draw(long long done, bool final) {
   for (int i = 0; i < width; ++i) bar[i] = i < filled ? '#' : '.';
   bar[width] = 0;
   char eta[32];
-  if (final) std::snprintf(eta, sizeof eta, "%.1fs", elapsed);
-  else if (frac > 0.01) std::snprintf(eta, sizeof eta, "ETA %.0fs", elapsed / frac - elapsed);
-  else std::snprintf(eta, sizeof eta, "ETA --");
+  if (final)
+    std::snprintf(eta, sizeof eta, "%.1fs", elapsed);
+  else if (frac > 0.01)
+    std::snprintf(eta, sizeof eta, "ETA %.0fs", elapsed / frac - elapsed);
+  else
+    std::snprintf(eta, sizeof eta, "ETA --");
   std::fprintf(stderr, "\r%s [%s] %3d%% %s   ", label_.c_str(), bar, int(frac * 100), eta);
   std::fflush(stderr);
 }

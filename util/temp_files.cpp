@@ -31,8 +31,8 @@ static_assert(std::atomic<unsigned>::is_always_lock_free && std::atomic<int>::is
               "the signal handler needs lock-free atomics");
 
 std::atomic<Slot*> g_slots{nullptr};
-std::mutex g_claim;          // claiming and freeing slots; the handler never takes it
-std::vector<Slot*> g_free;   // slots free for reuse (under g_claim)
+std::mutex g_claim;         // claiming and freeing slots; the handler never takes it
+std::vector<Slot*> g_free;  // slots free for reuse (under g_claim)
 
 // What a termination signal does now: end the process, wait for a commit, or nothing (the
 // process is already ending on another thread).
@@ -71,8 +71,10 @@ void remove_live(LiveTempFile::Kind kind) {
     copy[n] = 0;
     std::atomic_thread_fence(std::memory_order_acquire);
     if (s->version.load(std::memory_order_relaxed) != v || k != kind) continue;
-    if (kind == LiveTempFile::Kind::File) unlink(copy);
-    else rmdir(copy);
+    if (kind == LiveTempFile::Kind::File)
+      unlink(copy);
+    else
+      rmdir(copy);
   }
 }
 

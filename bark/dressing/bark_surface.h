@@ -16,22 +16,22 @@ namespace phellem::bark {
 
 // A point of the undisplaced surface.
 struct SurfacePoint {
-  Eigen::Vector2d param{0, 0};     // the surface's own (u, v) in [0, 1]² (u wraps around a trunk)
+  Eigen::Vector2d param{0, 0};  // the surface's own (u, v) in [0, 1]² (u wraps around a trunk)
   Eigen::Vector3f position{0, 0, 0};
   Eigen::Vector3f normal{0, 0, 1};  // unit, outwards
 };
 
 struct BarkDisplacement {
-  float offset = 0;                         // metres along the normal (< 0: into the bark)
-  Eigen::Vector2f attributes{0, 0};         // kept per vertex, handed back to shade()
+  float offset = 0;                  // metres along the normal (< 0: into the bark)
+  Eigen::Vector2f attributes{0, 0};  // kept per vertex, handed back to shade()
 };
 
 struct BarkShade {
-  float mask = 0;                           // fracture coverage in [0, 1]
-  float depth = 0;                          // normalized depth in [0, 1] (the crack AOV)
-  bool replaces_albedo = false;             // the bark's own albedo replaces the material's
-  Eigen::Vector3f albedo{0, 0, 0};          // when replaces_albedo (depth darkening included)
-  float albedo_scale = 1.0f;                // otherwise: the material's base colour × this
+  float mask = 0;                   // fracture coverage in [0, 1]
+  float depth = 0;                  // normalized depth in [0, 1] (the crack AOV)
+  bool replaces_albedo = false;     // the bark's own albedo replaces the material's
+  Eigen::Vector3f albedo{0, 0, 0};  // when replaces_albedo (depth darkening included)
+  float albedo_scale = 1.0f;        // otherwise: the material's base colour × this
 };
 
 class BarkSurface {

@@ -19,7 +19,8 @@ CrackProfile::CrackProfile(const bark::CrackedMesh& c, const CrackLook& look, ui
     return std::clamp(look.min_width + look.width_per_edge * c.crack_width[v] + gap, look.min_width, look.max_width);
   };
   for (const auto& e : c.crack_edges)
-    seg_.push_back({c.mesh.positions[e[0]].cast<float>(), c.mesh.positions[e[1]].cast<float>(), half_width(e[0]), half_width(e[1])});
+    seg_.push_back(
+        {c.mesh.positions[e[0]].cast<float>(), c.mesh.positions[e[1]].cast<float>(), half_width(e[0]), half_width(e[1])});
   reach_ = look.max_width * (1 + look.noise);
   cell_ = std::max(reach_, 1e-4f);
   for (uint32_t i = 0; i < seg_.size(); ++i) {
@@ -30,7 +31,8 @@ CrackProfile::CrackProfile(const bark::CrackedMesh& c, const CrackLook& look, ui
     }
     for (int x = int(std::floor(lo.x() / cell_)); x <= int(std::floor(hi.x() / cell_)); ++x)
       for (int y = int(std::floor(lo.y() / cell_)); y <= int(std::floor(hi.y() / cell_)); ++y)
-        for (int z = int(std::floor(lo.z() / cell_)); z <= int(std::floor(hi.z() / cell_)); ++z) grid_[cell_key(x, y, z)].push_back(i);
+        for (int z = int(std::floor(lo.z() / cell_)); z <= int(std::floor(hi.z() / cell_)); ++z)
+          grid_[cell_key(x, y, z)].push_back(i);
   }
   for (const auto& t : c.mesh.triangles) {
     auto p = [&](uint32_t k) { return K::Point_3(c.mesh.positions[k].x(), c.mesh.positions[k].y(), c.mesh.positions[k].z()); };
@@ -96,7 +98,8 @@ CrackProfile::Sample CrackProfile::at(const Vec3f& p, const Vec3f& n) const {
   });
   if (s.depth > 0) {
     // Never through the other side: at most 45 % of the thickness along the inward normal.
-    const K::Ray_3 ray(K::Point_3(p.x() - 1e-5f * n.x(), p.y() - 1e-5f * n.y(), p.z() - 1e-5f * n.z()), K::Vector_3(-n.x(), -n.y(), -n.z()));
+    const K::Ray_3 ray(K::Point_3(p.x() - 1e-5f * n.x(), p.y() - 1e-5f * n.y(), p.z() - 1e-5f * n.z()),
+                       K::Vector_3(-n.x(), -n.y(), -n.z()));
     if (const auto hit = tree_->first_intersection(ray)) {
       if (const K::Point_3* q = boost::get<K::Point_3>(&hit->first)) {
         const float thickness = float(std::sqrt(CGAL::squared_distance(*q, K::Point_3(p.x(), p.y(), p.z()))));

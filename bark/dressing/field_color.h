@@ -22,8 +22,8 @@ struct ColorSample {
   float variation = 0.25f;  // procedural: relative brightness variation
   double grain = 0.004;     // procedural: fibre spacing across the axis (m)
   uint32_t seed = 1;
-  int width = 0, height = 0;    // image, when not empty
-  std::vector<float> rgb;       // #height×#width×3, row 0 at the top
+  int width = 0, height = 0;  // image, when not empty
+  std::vector<float> rgb;     // #height×#width×3, row 0 at the top
   double size_x = 0.1, size_y = 0.1;
   // x around, y along the axis (m). A non-zero period makes the sample repeat exactly with
   // it (its features are resized to fit a whole number of times): cyclic strips get no seam.

@@ -58,17 +58,47 @@ std::vector<std::vector<Eigen::Vector2d>> contour_loops(const std::vector<float>
       auto L = [&] { return crossing(vkey(i, j), i, j, i, j + 1); };
       const bool centre = 0.25f * (value(i, j) + value(i + 1, j) + value(i + 1, j + 1) + value(i, j + 1)) >= level;
       switch (code) {
-        case 1: case 14: link(L(), B()); break;
-        case 2: case 13: link(B(), R()); break;
-        case 3: case 12: link(L(), R()); break;
-        case 4: case 11: link(R(), T()); break;
-        case 6: case 9: link(B(), T()); break;
-        case 7: case 8: link(L(), T()); break;
+        case 1:
+        case 14:
+          link(L(), B());
+          break;
+        case 2:
+        case 13:
+          link(B(), R());
+          break;
+        case 3:
+        case 12:
+          link(L(), R());
+          break;
+        case 4:
+        case 11:
+          link(R(), T());
+          break;
+        case 6:
+        case 9:
+          link(B(), T());
+          break;
+        case 7:
+        case 8:
+          link(L(), T());
+          break;
         case 5:  // a, c inside: joined through an inside centre, else cut off
-          if (centre) { link(B(), R()); link(T(), L()); } else { link(L(), B()); link(R(), T()); }
+          if (centre) {
+            link(B(), R());
+            link(T(), L());
+          } else {
+            link(L(), B());
+            link(R(), T());
+          }
           break;
         case 10:  // b, d inside
-          if (centre) { link(L(), B()); link(R(), T()); } else { link(B(), R()); link(T(), L()); }
+          if (centre) {
+            link(L(), B());
+            link(R(), T());
+          } else {
+            link(B(), R());
+            link(T(), L());
+          }
           break;
       }
     }

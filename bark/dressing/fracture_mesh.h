@@ -21,18 +21,18 @@ namespace phellem::bark {
 std::vector<std::vector<Eigen::Vector2d>> contour_loops(const std::vector<float>& values, int W, int H, float level);
 
 struct FractureMesh {
-  int width = 0, height = 0;               // the domain [0, W] × [0, H] in texel units
-  std::vector<Eigen::Vector2d> param;      // per vertex (x, y); x = W is the seam's right side
-  std::vector<float> depth;                // per vertex (m below the epidermis)
-  std::vector<Eigen::Vector3i> triangles;  // counter-clockwise in (x, y)
-  std::vector<uint8_t> fracture;           // per triangle: 1 inside a fracture silhouette
+  int width = 0, height = 0;                              // the domain [0, W] × [0, H] in texel units
+  std::vector<Eigen::Vector2d> param;                     // per vertex (x, y); x = W is the seam's right side
+  std::vector<float> depth;                               // per vertex (m below the epidermis)
+  std::vector<Eigen::Vector3i> triangles;                 // counter-clockwise in (x, y)
+  std::vector<uint8_t> fracture;                          // per triangle: 1 inside a fracture silhouette
   std::vector<std::vector<Eigen::Vector2d>> silhouettes;  // the fracture polygons
 };
 
 // `depth_levels` are fractions of `max_depth` whose iso-lines become mesh edges; `grid` is the
 // spacing (texels) of the Steiner points that keep flat bark triangles small enough to follow
 // the cylinder.
-FractureMesh mesh_fracture_field(const FractureField& field, double max_depth, const std::vector<double>& depth_levels = {0.25, 0.5, 0.75},
-                                 int grid = 8);
+FractureMesh mesh_fracture_field(const FractureField& field, double max_depth,
+                                 const std::vector<double>& depth_levels = {0.25, 0.5, 0.75}, int grid = 8);
 
 }  // namespace phellem::bark

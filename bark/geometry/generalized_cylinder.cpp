@@ -9,8 +9,8 @@ namespace phellem::bark {
 namespace {
 
 // Centripetal Catmull-Rom (Barry–Goldman pyramid) between p1 and p2, t ∈ [0, 1].
-Eigen::Vector3d catmull_rom(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                            const Eigen::Vector3d& p2, const Eigen::Vector3d& p3, double t) {
+Eigen::Vector3d catmull_rom(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                            const Eigen::Vector3d& p3, double t) {
   auto knot = [](double ti, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     return ti + std::max(1e-9, std::sqrt((b - a).norm()));
   };

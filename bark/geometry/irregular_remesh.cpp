@@ -67,7 +67,8 @@ TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o) {
       ecm[e] = true;
       continue;
     }
-    const bool seam = source.has_uvs() && ((source.uv(h) - source.uv(src.prev(t))).norm() > 1e-9 || (source.uv(t) - source.uv(src.prev(h))).norm() > 1e-9);
+    const bool seam = source.has_uvs() && ((source.uv(h) - source.uv(src.prev(t))).norm() > 1e-9 ||
+                                           (source.uv(t) - source.uv(src.prev(h))).norm() > 1e-9);
     const bool sharp = source.face(src.face(h)).normal.dot(source.face(src.face(t)).normal) < cos_sharp;
     ecm[e] = seam || sharp;
   }
@@ -78,8 +79,9 @@ TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o) {
   for (FaceId f : src.faces()) area += source.face(f).area;
   const double expected = area / (0.4330127 * target * target);
   if (expected > double(kMaxRemeshTriangles))
-    throw MeshError("edge_length", "an edge length of " + std::to_string(target) + " m would make about " + std::to_string(static_cast<long long>(expected)) +
-                                " triangles; at most " + std::to_string(kMaxRemeshTriangles) + " are allowed (use a longer edge_length)");
+    throw MeshError("edge_length", "an edge length of " + std::to_string(target) + " m would make about " +
+                                       std::to_string(static_cast<long long>(expected)) + " triangles; at most " +
+                                       std::to_string(kMaxRemeshTriangles) + " are allowed (use a longer edge_length)");
   // Patches: faces connected without crossing a constrained edge (UV charts); the remesher
   // keeps them up to date as it makes new faces.
   auto patch = sm.add_property_map<FaceId, int>("f:patch", -1).first;
@@ -148,11 +150,13 @@ TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o) {
       const Eigen::Vector3d old = to_eigen(sm.point(v));
       const Eigen::Vector3d offset(rng.symmetric(), rng.symmetric(), rng.symmetric());
       const double before = fan(v, n_before);
-      const auto q = all.closest_point(StressKernel::Point_3(old.x() + o.jitter * target * offset.x(), old.y() + o.jitter * target * offset.y(),
+      const auto q = all.closest_point(StressKernel::Point_3(old.x() + o.jitter * target * offset.x(),
+                                                             old.y() + o.jitter * target * offset.y(),
                                                              old.z() + o.jitter * target * offset.z()));
       sm.point(v) = q;
       bool ok = fan(v, n_after) >= std::min(floor_angle, before);
-      for (size_t k = 0; ok && k < n_after.size(); ++k) ok = n_after[k].dot(n_before[k]) > 0.5 * n_after[k].norm() * n_before[k].norm();
+      for (size_t k = 0; ok && k < n_after.size(); ++k)
+        ok = n_after[k].dot(n_before[k]) > 0.5 * n_after[k].norm() * n_before[k].norm();
       if (!ok) sm.point(v) = StressKernel::Point_3(old.x(), old.y(), old.z());
     }
   }
@@ -184,7 +188,8 @@ TriMesh irregular_remesh(const TriMesh& in, const RemeshOptions& o) {
       for (VertexId v : CGAL::vertices_around_face(sm.halfedge(f), sm)) c += to_eigen(sm.point(v)) / 3.0;
       centre_face = tree->second->closest_point_and_primitive(StressKernel::Point_3(c.x(), c.y(), c.z())).second;
       const auto cs = source.corners(centre_face);
-      for (int i = 0; i < 3; ++i) centre_span = std::max(centre_span, (source.uv(cs[size_t(i)]) - source.uv(cs[size_t((i + 1) % 3)])).norm());
+      for (int i = 0; i < 3; ++i)
+        centre_span = std::max(centre_span, (source.uv(cs[size_t(i)]) - source.uv(cs[size_t((i + 1) % 3)])).norm());
     }
     for (HalfedgeId h : CGAL::halfedges_around_face(sm.halfedge(f), sm)) {
       const VertexId v = sm.target(h);

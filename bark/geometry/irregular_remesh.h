@@ -15,8 +15,8 @@
 namespace phellem::bark {
 
 struct RemeshOptions {
-  double edge_length = 0;     // target (m); 0: the input's mean edge length
-  double jitter = 0.3;        // tangential jitter, fraction of the edge length
+  double edge_length = 0;       // target (m); 0: the input's mean edge length
+  double jitter = 0.3;          // tangential jitter, fraction of the edge length
   double sharp_angle_deg = 60;  // dihedral angles sharper than this are kept as features
   int iterations = 3;
   bool smooth = true;  // move the vertices onto the smooth (Phong, α = ½) surface of the input's triangles

@@ -16,7 +16,8 @@ struct FloatTripleHash {
 };
 }  // namespace
 
-std::vector<Vec3f> vertex_normals(const std::vector<Vec3f>& positions, const std::vector<uint32_t>& indices, bool weld_by_position) {
+std::vector<Vec3f> vertex_normals(const std::vector<Vec3f>& positions, const std::vector<uint32_t>& indices,
+                                  bool weld_by_position) {
   // With welding, each vertex accumulates into the first vertex at its position.
   std::vector<uint32_t> rep;
   if (weld_by_position) {
@@ -47,7 +48,9 @@ std::vector<Vec3f> vertex_normals(const std::vector<Vec3f>& positions, const std
   return n;
 }
 
-void compute_vertex_normals(MeshData& m, bool weld_by_position) { m.normals = vertex_normals(m.positions, m.indices, weld_by_position); }
+void compute_vertex_normals(MeshData& m, bool weld_by_position) {
+  m.normals = vertex_normals(m.positions, m.indices, weld_by_position);
+}
 
 void compute_tangents(MeshData& m) {
   if (m.uvs.size() != m.positions.size()) return;

@@ -19,9 +19,8 @@ struct MeshData {
 
   size_t triangle_count() const { return indices.size() / 3; }
   size_t memory_bytes() const {
-    return positions.capacity() * sizeof(Vec3f) + normals.capacity() * sizeof(Vec3f) +
-           uvs.capacity() * sizeof(Vec2f) + params.capacity() * sizeof(Vec2f) + tangents.capacity() * sizeof(Vec4f) +
-           indices.capacity() * sizeof(uint32_t);
+    return positions.capacity() * sizeof(Vec3f) + normals.capacity() * sizeof(Vec3f) + uvs.capacity() * sizeof(Vec2f) +
+           params.capacity() * sizeof(Vec2f) + tangents.capacity() * sizeof(Vec4f) + indices.capacity() * sizeof(uint32_t);
   }
 };
 
@@ -30,7 +29,8 @@ struct MeshData {
 // from all their faces: the surface is smooth across the seam.
 void compute_vertex_normals(MeshData& mesh, bool weld_by_position = false);
 // The same normals for positions and indices held apart.
-std::vector<Vec3f> vertex_normals(const std::vector<Vec3f>& positions, const std::vector<uint32_t>& indices, bool weld_by_position = false);
+std::vector<Vec3f> vertex_normals(const std::vector<Vec3f>& positions, const std::vector<uint32_t>& indices,
+                                  bool weld_by_position = false);
 // Per-vertex tangents from UVs (for normal maps); no-op without UVs.
 void compute_tangents(MeshData& mesh);
 

@@ -50,12 +50,12 @@ TriMesh jittered_sheet(int nx, int ny, double width, double height, double jitte
 
 TriMesh icosphere(int subdivisions, double radius) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<Eigen::Vector3d> p = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for (auto& v : p) v.normalize();
-  std::vector<std::array<uint32_t, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+  std::vector<std::array<uint32_t, 3>> f = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
                                             {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                                            {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+                                            {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (int s = 0; s < subdivisions; ++s) {
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
     auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -88,11 +88,13 @@ TriMesh cylinder_mesh(double radius, double height, int around, int along, doubl
 }
 
 TriMesh vase_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed) {
-  return revolved_mesh([radius](double t) { return radius * (0.55 + 0.45 * std::sin(kPi * std::min(1.0, 1.15 * t)) + 0.25 * t * t); },
-                       height, around, along, jitter, seed);
+  return revolved_mesh(
+      [radius](double t) { return radius * (0.55 + 0.45 * std::sin(kPi * std::min(1.0, 1.15 * t)) + 0.25 * t * t); }, height,
+      around, along, jitter, seed);
 }
 
-TriMesh revolved_mesh(const std::function<double(double)>& radius_at, double height, int around, int along, double jitter, uint64_t seed) {
+TriMesh revolved_mesh(const std::function<double(double)>& radius_at, double height, int around, int along, double jitter,
+                      uint64_t seed) {
   TriMesh m;
   const double dt = 2 * kPi / around, dy = height / along;
   // Vertices (i, j), i in [0, around) (welded around), plus seam copies at i = around for UVs.

@@ -22,7 +22,8 @@ TriMesh icosphere(int subdivisions, double radius);
 TriMesh cylinder_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed);
 
 // The same around a radius profile r(t), t = y / height ∈ [0, 1] (a vase, a flared trunk).
-TriMesh revolved_mesh(const std::function<double(double)>& radius, double height, int around, int along, double jitter, uint64_t seed);
+TriMesh revolved_mesh(const std::function<double(double)>& radius, double height, int around, int along, double jitter,
+                      uint64_t seed);
 
 // A vase: a surface of revolution with a belly and a narrower neck.
 TriMesh vase_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed);

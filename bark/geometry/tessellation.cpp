@@ -42,8 +42,8 @@ int DicingParams::edge_rate(const Vec3f* pts, int count) const {
 namespace {
 
 struct GridRates {
-  int pu, pv, columns;          // columns = pu + 1 corner columns (seam column duplicated)
-  std::vector<int> h, vert;     // h[(j)*pu + i], vert[j*columns + i]
+  int pu, pv, columns;       // columns = pu + 1 corner columns (seam column duplicated)
+  std::vector<int> h, vert;  // h[(j)*pu + i], vert[j*columns + i]
   int H(int i, int j) const { return h[j * pu + i]; }
   int V(int i, int j) const { return vert[j * columns + i]; }
 };
@@ -58,8 +58,7 @@ GridRates compute_rates(const ParametricSurface& s, const DicingParams& d) {
   tbb::parallel_for(0, g.pv + 1, [&](int j) {
     std::array<Vec3f, kEdgeSamples + 1> pts;
     for (int i = 0; i < g.pu; ++i) {
-      for (int k = 0; k <= kEdgeSamples; ++k)
-        pts[k] = s.position((i + float(k) / kEdgeSamples) / g.pu, float(j) / g.pv);
+      for (int k = 0; k <= kEdgeSamples; ++k) pts[k] = s.position((i + float(k) / kEdgeSamples) / g.pu, float(j) / g.pv);
       g.h[j * g.pu + i] = d.edge_rate(pts.data(), kEdgeSamples + 1);
     }
     if (j == g.pv) return;
@@ -68,8 +67,7 @@ GridRates compute_rates(const ParametricSurface& s, const DicingParams& d) {
         g.vert[j * g.columns + i] = g.vert[j * g.columns];
         continue;
       }
-      for (int k = 0; k <= kEdgeSamples; ++k)
-        pts[k] = s.position(float(i) / g.pu, (j + float(k) / kEdgeSamples) / g.pv);
+      for (int k = 0; k <= kEdgeSamples; ++k) pts[k] = s.position(float(i) / g.pu, (j + float(k) / kEdgeSamples) / g.pv);
       g.vert[j * g.columns + i] = d.edge_rate(pts.data(), kEdgeSamples + 1);
     }
   });
@@ -335,11 +333,13 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
 }
 
 long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
-  return estimate_triangles(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }), d);
+  return estimate_triangles(
+      base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }), d);
 }
 
 MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
-  return dice(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }), d);
+  return dice(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }),
+              d);
 }
 
 }  // namespace phellem

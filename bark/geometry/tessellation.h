@@ -16,8 +16,8 @@ namespace phellem {
 
 struct DicingParams {
   bool screen_space = true;
-  float target = 1.0f;        // pixels per micro-edge (screen) or metres (object)
-  float scale = 1.0f;         // memory knob: multiplies the target
+  float target = 1.0f;  // pixels per micro-edge (screen) or metres (object)
+  float scale = 1.0f;   // memory knob: multiplies the target
   Vec3f camera_position{0, 0, 0};
   float pixel_angle = 1e-3f;  // radians subtended by one pixel of the dicing camera
   int max_rate = 256;         // segments per patch edge

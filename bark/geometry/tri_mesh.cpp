@@ -8,12 +8,12 @@ namespace phellem::bark {
 
 double TriMesh::area() const {
   double a = 0;
-  for (const auto& t : triangles)
-    a += 0.5 * (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).norm();
+  for (const auto& t : triangles) a += 0.5 * (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).norm();
   return a;
 }
 
-Eigen::Vector3d barycentric(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+Eigen::Vector3d barycentric(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                            const Eigen::Vector3d& c) {
   const Eigen::Vector3d v0 = b - a, v1 = c - a, v2 = q - a;
   const double d00 = v0.dot(v0), d01 = v0.dot(v1), d11 = v1.dot(v1), d20 = v2.dot(v0), d21 = v2.dot(v1);
   const double den = d00 * d11 - d01 * d01;

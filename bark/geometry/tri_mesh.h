@@ -20,7 +20,8 @@ struct TriMesh {
 
 // Barycentric coordinates of q's projection onto the plane of triangle (a, b, c), extrapolated
 // outside it; (1, 0, 0) for a degenerate triangle.
-Eigen::Vector3d barycentric(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+Eigen::Vector3d barycentric(const Eigen::Vector3d& q, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                            const Eigen::Vector3d& c);
 
 // A triangle's area over its longest edge squared (at most √3/4 ≈ 0.43 for an equilateral
 // one; 0 for collinear corners): the measure by which meshes are refused or repaired as

@@ -27,7 +27,8 @@ namespace {
 namespace PMP = CGAL::Polygon_mesh_processing;
 using Point = StressKernel::Point_3;
 using Triangle = StressKernel::Triangle_3;
-using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<StressKernel, CGAL::AABB_triangle_primitive<StressKernel, std::vector<Triangle>::const_iterator>>>;
+using TriangleTree = CGAL::AABB_tree<
+    CGAL::AABB_traits<StressKernel, CGAL::AABB_triangle_primitive<StressKernel, std::vector<Triangle>::const_iterator>>>;
 
 // Vertices welded by exact position (a diced tube repeats its seam column).
 SurfaceMesh to_surface_mesh(const TriMesh& t) {
@@ -48,7 +49,8 @@ SurfaceMesh to_surface_mesh(const TriMesh& t) {
 }
 
 // Removes the faces of the components listed (and what they leave isolated).
-void remove_components(SurfaceMesh& m, const SurfaceMesh::Property_map<FaceId, std::size_t>& component, const std::vector<std::size_t>& drop) {
+void remove_components(SurfaceMesh& m, const SurfaceMesh::Property_map<FaceId, std::size_t>& component,
+                       const std::vector<std::size_t>& drop) {
   if (drop.empty()) return;
   PMP::remove_connected_components(m, drop, component);
   m.collect_garbage();
@@ -118,7 +120,8 @@ bool remove_slivers(SurfaceMesh& m) {
       if (lo < 1e-12 * hi && CGAL::Euler::does_satisfy_link_condition(m.edge(shortest), m)) {
         CGAL::Euler::collapse_edge(m.edge(shortest), m);
         changed = true;
-      } else if (!m.is_border(m.edge(longest)) && !CGAL::halfedge(m.target(m.next(longest)), m.target(m.next(m.opposite(longest))), m).second) {
+      } else if (!m.is_border(m.edge(longest)) &&
+                 !CGAL::halfedge(m.target(m.next(longest)), m.target(m.next(m.opposite(longest))), m).second) {
         CGAL::Euler::flip_edge(longest, m);
         changed = true;
       } else {
@@ -165,7 +168,8 @@ std::string join_branch(SurfaceMesh& surface, SurfaceMesh branch) {
   std::vector<char> touches_s(ns, 0);
   for (FaceId f : surface.faces()) {
     area_s[comp_s[f]] += PMP::face_area(f, surface);
-    for (auto h : CGAL::halfedges_around_face(surface.halfedge(f), surface)) touches_s[comp_s[f]] |= on_curve_s[surface.edge(h)] ? 1 : 0;
+    for (auto h : CGAL::halfedges_around_face(surface.halfedge(f), surface))
+      touches_s[comp_s[f]] |= on_curve_s[surface.edge(h)] ? 1 : 0;
   }
   for (FaceId f : branch.faces()) area_b[comp_b[f]] += PMP::face_area(f, branch);
   // The surface splits into the rest and the patch inside the branch: two pieces on the curve.
@@ -210,7 +214,8 @@ JoinedTubes join_tubes(const std::vector<TriMesh>& parts, const std::vector<int>
       out.not_joined.push_back("branch " + std::to_string(k) + ": it has no parent before it");
       continue;
     }
-    if (const std::string why = join_branch(surface, std::move(branch)); !why.empty()) out.not_joined.push_back("branch " + std::to_string(k) + ": " + why);
+    if (const std::string why = join_branch(surface, std::move(branch)); !why.empty())
+      out.not_joined.push_back("branch " + std::to_string(k) + ": " + why);
   }
   // The open ends (the trunk's base and top, each limb's tip) are closed with flat caps
   // refined to the density around them, like sawn ends: a closed surface has no hollow ends to

@@ -12,9 +12,7 @@ namespace phellem::bark {
 
 namespace {
 
-double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
 // Splits the edge of halfedge h_ab (a → b, in the face v → a → b) at parameter t, connects the
 // new vertex to v and to the far face's third vertex, and fixes up the four faces. Returns the
@@ -74,7 +72,8 @@ std::pair<VertexId, HalfedgeId> split_and_connect(StressMesh& m, HalfedgeId h_ab
   return {q, h_qv};
 }
 
-CrackSide insert_side(StressMesh& m, VertexId v, const Eigen::Vector3d& n_v, const Eigen::Vector3d& d, const CrackInsertOptions& o) {
+CrackSide insert_side(StressMesh& m, VertexId v, const Eigen::Vector3d& n_v, const Eigen::Vector3d& d,
+                      const CrackInsertOptions& o) {
   SurfaceMesh& g = m.mesh();
   CrackSide out;
   const Eigen::Vector3d pv = m.point(v);

@@ -11,16 +11,16 @@
 namespace phellem::bark {
 
 struct CrackInsertOptions {
-  double snap_angle = 0.17;        // ESA (radians)
-  double stress_alleviation = 0;   // SA: the faces a split creates keep SA × their parent's stress
-  double max_beta_sv = 1e300;      // κ × the initial maximum: new faces' β singular values are clamped to it
+  double snap_angle = 0.17;       // ESA (radians)
+  double stress_alleviation = 0;  // SA: the faces a split creates keep SA × their parent's stress
+  double max_beta_sv = 1e300;     // κ × the initial maximum: new faces' β singular values are clamped to it
 };
 
 struct CrackSide {
-  bool added = false;    // a new crack edge (false: no face in that direction, or the edge was a crack already)
-  bool snapped = false;  // onto an existing edge
-  bool split = false;    // an edge was split: `tip` is a new vertex on it
-  VertexId tip;          // the crack's end on this side
+  bool added = false;             // a new crack edge (false: no face in that direction, or the edge was a crack already)
+  bool snapped = false;           // onto an existing edge
+  bool split = false;             // an edge was split: `tip` is a new vertex on it
+  VertexId tip;                   // the crack's end on this side
   VertexId split_from, split_to;  // split: the edge's ends; the tip is at split_t between them
   double split_t = 0;
 };

@@ -13,7 +13,7 @@
 namespace phellem::bark {
 
 struct CrackedMesh {
-  TriMesh mesh;  // vertices split where UVs disagree (seams)
+  TriMesh mesh;                                      // vertices split where UVs disagree (seams)
   std::vector<std::array<uint32_t, 2>> crack_edges;  // indices into mesh.positions
   std::vector<float> crack_width;                    // per vertex: Algorithm 1, in crack edges (0 off cracks)
   std::vector<int32_t> component;                    // per vertex: crack component, −1 off cracks

@@ -37,9 +37,12 @@ double CrackedMesh::crack_length() const {
 StressCracker::StressCracker(StressMesh mesh, StressParams params) : mesh_(std::move(mesh)), params_(std::move(params)) {
   if (auto e = validate(params_)) throw *e;
   if (!mesh_.has_uvs()) {  // what lives in UV space needs texture coordinates
-    if (!params_.image.empty()) throw StressParamError{"stress_image", "needs a mesh with texture coordinates (this one has none)"};
+    if (!params_.image.empty())
+      throw StressParamError{"stress_image", "needs a mesh with texture coordinates (this one has none)"};
     for (const StressStroke& s : params_.strokes)
-      if (s.in_uv) throw StressParamError{"strokes", "a \"uv\" stroke needs a mesh with texture coordinates (this one has none); give 3D \"points\""};
+      if (s.in_uv)
+        throw StressParamError{"strokes",
+                               "a \"uv\" stroke needs a mesh with texture coordinates (this one has none); give 3D \"points\""};
   }
   const SurfaceMesh& g = mesh_.mesh();
   double mean_edge = 0;
@@ -150,8 +153,7 @@ void StressCracker::crack_step() {
       stats_.snapped += s.snapped;
       stats_.splits += s.split;
       const size_t t = s.tip.idx();
-      if (s.split)
-        separation_[t] = (1 - s.split_t) * separation_[s.split_from.idx()] + s.split_t * separation_[s.split_to.idx()];
+      if (s.split) separation_[t] = (1 - s.split_t) * separation_[s.split_from.idx()] + s.split_t * separation_[s.split_to.idx()];
       separation_[t] += surplus;
       residual_[t] += surplus;
       if (!cracked[t])

@@ -23,10 +23,10 @@
 namespace phellem::bark {
 
 struct StressStats {
-  long long cracks = 0;          // crack events that added at least one crack edge
-  long long crack_edges = 0;     // edges marked as cracks now
-  long long snapped = 0;         // crack sides that snapped onto an existing edge
-  long long splits = 0;          // edges split by crack insertion
+  long long cracks = 0;       // crack events that added at least one crack edge
+  long long crack_edges = 0;  // edges marked as cracks now
+  long long snapped = 0;      // crack sides that snapped onto an existing edge
+  long long splits = 0;       // edges split by crack insertion
   int iterations = 0;
 };
 
@@ -65,7 +65,7 @@ class StressCracker {
   // and vertices, so matching counts mean it is current).
   StressTopology topology_;
   std::vector<Eigen::Matrix3d> separation_, residual_;  // per vertex
-  std::vector<Eigen::Vector3d> displacement_;            // per vertex
+  std::vector<Eigen::Vector3d> displacement_;           // per vertex
   mutable StressStats stats_;
 };
 

@@ -17,7 +17,8 @@ StressMesh::StressMesh() : mesh_(std::make_unique<SurfaceMesh>()) {
 StressMesh StressMesh::from(const TriMesh& in) {
   if (in.triangles.empty()) throw MeshError("mesh", "has no triangles");
   if (in.has_uvs() && in.uvs.size() != in.positions.size())
-    throw MeshError("mesh", "has " + std::to_string(in.uvs.size()) + " texture coordinates for " + std::to_string(in.positions.size()) + " positions");
+    throw MeshError("mesh", "has " + std::to_string(in.uvs.size()) + " texture coordinates for " +
+                                std::to_string(in.positions.size()) + " positions");
   for (size_t i = 0; i < in.positions.size(); ++i)
     if (!in.positions[i].allFinite()) throw MeshError("vertex " + std::to_string(i), "has a non-finite coordinate");
   StressMesh m;
@@ -37,14 +38,17 @@ StressMesh StressMesh::from(const TriMesh& in) {
     const std::string where = "triangle " + std::to_string(t);
     for (uint32_t k : tri)
       if (k >= in.positions.size())
-        throw MeshError(where, "vertex index " + std::to_string(k) + " is out of range (" + std::to_string(in.positions.size()) + " positions)");
+        throw MeshError(where, "vertex index " + std::to_string(k) + " is out of range (" + std::to_string(in.positions.size()) +
+                                   " positions)");
     const VertexId a = vertex_of[tri[0]], b = vertex_of[tri[1]], c = vertex_of[tri[2]];
     if (a == b || b == c || a == c) throw MeshError(where, "is degenerate (a vertex repeats)");
     const Eigen::Vector3d pa = in.positions[tri[0]], pb = in.positions[tri[1]], pc = in.positions[tri[2]];
     if (!(triangle_shape(pa, pb, pc) > 1e-12)) throw MeshError(where, "is degenerate (zero area)");
     const FaceId f = g.add_face(a, b, c);
     if (f == SurfaceMesh::null_face())
-      throw MeshError(where, "makes the mesh non-manifold (an edge already used by two triangles, a triangle of opposite orientation, or a pinched vertex)");
+      throw MeshError(where,
+                      "makes the mesh non-manifold (an edge already used by two triangles, a triangle of opposite orientation, "
+                      "or a pinched vertex)");
     if (m.has_uvs_) {
       const HalfedgeId h = g.halfedge(f);  // target(h) is the face's last vertex given to add_face
       for (HalfedgeId c2 : CGAL::halfedges_around_face(h, g)) {

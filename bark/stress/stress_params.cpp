@@ -27,7 +27,9 @@ std::optional<StressParamError> validate(const StressParams& p) {
   // Measured: stable at 0.5 on cracked jittered meshes, diverging at 1 (stress_relaxation.h).
   if (auto e = range("time_step", p.time_step, 0, 0.5, "in [0, 0.5] (larger steps make the relaxation unstable)")) return e;
   if (auto e = range("kappa", p.kappa, 1, 1e6, "at least 1")) return e;
-  if (auto e = range("magnitude", p.magnitude, 0, 1e9, "in [0, 1e9] (the initial stress magnitude s; negative values have no meaning)")) return e;
+  if (auto e = range("magnitude", p.magnitude, 0, 1e9,
+                     "in [0, 1e9] (the initial stress magnitude s; negative values have no meaning)"))
+    return e;
   if (auto e = range("mix_ratio", p.mix_ratio, 0, 1e6, "non-negative")) return e;
   if (auto e = range("curvature_stress", p.curvature_stress, -1e9, 1e9, "finite")) return e;
   if (!p.growth_increment.allFinite()) return StressParamError{"growth_increment", "must be finite"};

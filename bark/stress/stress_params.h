@@ -47,20 +47,20 @@ struct StressStroke {
 };
 
 struct StressParams {
-  int iterations = 50;                 // TI
-  int cracks_per_iteration = 5;        // CPI
-  int relaxations_per_iteration = 1;   // RPI
-  double alpha = 0.0;                  // residual weighting α ∈ [0, 1] (eq. 6)
-  double stress_alleviation = 0.0;     // SA ∈ [0, 1] (sec. 3.2): 0 = no stress left in faces a crack creates
-  double random_rotation = 0.0;        // RR: each face's initial tensor rotated by up to ±RR·π/2
-  double crack_rotation = 0.0;         // crack direction rotated by up to ±crack_rotation·π/2
-  double snap_angle_deg = 10.0;        // ESA: snap onto an existing edge closer than this
-  double threshold = 0.6;              // τ, relative (see above)
-  double time_step = 0.2;              // Δt of eq. 7 (dimensionless; see stress_relaxation.h)
-  double kappa = 4.0;                  // κ: new faces' β singular values ≤ κ × the initial maximum
+  int iterations = 50;                // TI
+  int cracks_per_iteration = 5;       // CPI
+  int relaxations_per_iteration = 1;  // RPI
+  double alpha = 0.0;                 // residual weighting α ∈ [0, 1] (eq. 6)
+  double stress_alleviation = 0.0;    // SA ∈ [0, 1] (sec. 3.2): 0 = no stress left in faces a crack creates
+  double random_rotation = 0.0;       // RR: each face's initial tensor rotated by up to ±RR·π/2
+  double crack_rotation = 0.0;        // crack direction rotated by up to ±crack_rotation·π/2
+  double snap_angle_deg = 10.0;       // ESA: snap onto an existing edge closer than this
+  double threshold = 0.6;             // τ, relative (see above)
+  double time_step = 0.2;             // Δt of eq. 7 (dimensionless; see stress_relaxation.h)
+  double kappa = 4.0;                 // κ: new faces' β singular values ≤ κ × the initial maximum
   StressPattern pattern = StressPattern::UniformTension;
-  double magnitude = 1.0;              // s: initial stress magnitude
-  double mix_ratio = 0.5;              // Mixed: vertical / horizontal tension
+  double magnitude = 1.0;  // s: initial stress magnitude
+  double mix_ratio = 0.5;  // Mixed: vertical / horizontal tension
   StressImage image;
   std::vector<StressStroke> strokes;
   // Woodification sec. 5 hooks: a stress increment added to every face each iteration

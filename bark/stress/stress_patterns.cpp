@@ -162,7 +162,8 @@ std::vector<Eigen::Matrix2d> growth_stress(const StressMesh& m, double s) {
 void initialize_stress(StressMesh& m, const StressParams& p) {
   const SurfaceMesh& g = m.mesh();
   const double s = p.magnitude;
-  const std::vector<Eigen::Matrix2d> growth = p.pattern == StressPattern::Growth ? growth_stress(m, s) : std::vector<Eigen::Matrix2d>{};
+  const std::vector<Eigen::Matrix2d> growth =
+      p.pattern == StressPattern::Growth ? growth_stress(m, s) : std::vector<Eigen::Matrix2d>{};
   for (FaceId f : g.faces()) {
     FaceState& st = m.face(f);
     const auto [h, v] = horizontal_vertical(st.normal);
@@ -172,11 +173,20 @@ void initialize_stress(StressMesh& m, const StressParams& p) {
       case StressPattern::Image:
         w = s * (st.frame * st.frame.transpose());
         break;
-      case StressPattern::Horizontal: w = s * h * h.transpose(); break;
-      case StressPattern::Vertical: w = s * v * v.transpose(); break;
-      case StressPattern::Mixed: w = s * (h * h.transpose() + p.mix_ratio * v * v.transpose()); break;
-      case StressPattern::Growth: w = st.frame * growth[f.idx()] * st.frame.transpose(); break;
-      case StressPattern::Strokes: break;
+      case StressPattern::Horizontal:
+        w = s * h * h.transpose();
+        break;
+      case StressPattern::Vertical:
+        w = s * v * v.transpose();
+        break;
+      case StressPattern::Mixed:
+        w = s * (h * h.transpose() + p.mix_ratio * v * v.transpose());
+        break;
+      case StressPattern::Growth:
+        w = st.frame * growth[f.idx()] * st.frame.transpose();
+        break;
+      case StressPattern::Strokes:
+        break;
     }
     if (!p.image.empty() && m.has_uvs()) {
       const Eigen::Vector2d uv = centroid_uv(m, f);
@@ -184,7 +194,8 @@ void initialize_stress(StressMesh& m, const StressParams& p) {
         w *= sample(p.image, uv.x(), uv.y(), 0);
       } else if (const auto t = uv_tangents(m, f)) {
         const auto& [tu, tv] = *t;
-        const double suu = sample(p.image, uv.x(), uv.y(), 0), svv = sample(p.image, uv.x(), uv.y(), 1), suv = sample(p.image, uv.x(), uv.y(), 2);
+        const double suu = sample(p.image, uv.x(), uv.y(), 0), svv = sample(p.image, uv.x(), uv.y(), 1),
+                     suv = sample(p.image, uv.x(), uv.y(), 2);
         w = s * (suu * tu * tu.transpose() + svv * tv * tv.transpose() + suv * (tu * tv.transpose() + tv * tu.transpose()));
       }
     }

@@ -23,13 +23,14 @@ std::vector<double> vertex_stiffness(const StressMesh& m, const StressTopology& 
   return k;
 }
 
-void relax(StressMesh& m, const StressTopology& t, const ForceField& forces, double dt, std::vector<Eigen::Vector3d>* displacement,
-           const std::vector<double>* stiffness) {
+void relax(StressMesh& m, const StressTopology& t, const ForceField& forces, double dt,
+           std::vector<Eigen::Vector3d>* displacement, const std::vector<double>* stiffness) {
   std::vector<double> own;
   if (!stiffness) own = vertex_stiffness(m, t);
   const std::vector<double>& k = stiffness ? *stiffness : own;
   std::vector<Eigen::Vector3d> dp(t.vertices());
-  for (size_t i = 0; i < dp.size(); ++i) dp[i] = k[i] > 0 ? Eigen::Vector3d(dt / k[i] * forces.total[i]) : Eigen::Vector3d::Zero();  // eq. 7
+  for (size_t i = 0; i < dp.size(); ++i)
+    dp[i] = k[i] > 0 ? Eigen::Vector3d(dt / k[i] * forces.total[i]) : Eigen::Vector3d::Zero();  // eq. 7
   tbb::parallel_for(tbb::blocked_range<size_t>(0, t.faces(), 256), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t f = r.begin(); f != r.end(); ++f) {
       FaceState& s = m.face(FaceId(static_cast<SurfaceMesh::size_type>(f)));

@@ -10,8 +10,7 @@ std::vector<int> fracture_ends_per_strip(const StripModel& m) {
   std::vector<int> ends(n, 0);
   for (size_t j = 0; j < n; ++j)
     for (const Element& e : m.strips()[j].elements)
-      if (e.kind == ElementKind::Fracture)
-        ends[j] += int(e.up < 0 && (wrap || j + 1 < n)) + int(e.down < 0 && (wrap || j > 0));
+      if (e.kind == ElementKind::Fracture) ends[j] += int(e.up < 0 && (wrap || j + 1 < n)) + int(e.down < 0 && (wrap || j > 0));
   return ends;
 }
 

@@ -28,10 +28,14 @@ struct StripSpans {
 double DepthProfile::evaluate(double q) const {
   q = std::clamp(q, 0.0, 1.0);
   switch (shape) {
-    case DepthProfileShape::V: return q;
-    case DepthProfileShape::U: return 1.0 - (1.0 - q) * (1.0 - q);
-    case DepthProfileShape::Box: return q > 0.05 ? 1.0 : q / 0.05;
-    case DepthProfileShape::Round: return std::sqrt(std::max(0.0, 1.0 - (1.0 - q) * (1.0 - q)));
+    case DepthProfileShape::V:
+      return q;
+    case DepthProfileShape::U:
+      return 1.0 - (1.0 - q) * (1.0 - q);
+    case DepthProfileShape::Box:
+      return q > 0.05 ? 1.0 : q / 0.05;
+    case DepthProfileShape::Round:
+      return std::sqrt(std::max(0.0, 1.0 - (1.0 - q) * (1.0 - q)));
   }
   return q;
 }
@@ -119,7 +123,8 @@ FractureField rasterize_strips(const StripModel& model, int W, int H, const Dept
         if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
         const double L = st.length(i);
         const double frac = L > 0 ? std::clamp(off / L, 0.0, 1.0) : 0.0;
-        const double m0 = st.cold[i].material, m = e.kind == ElementKind::Epidermis && e.level == 0 ? m0 + frac * e.rest / E0 : m0;
+        const double m0 = st.cold[i].material,
+                     m = e.kind == ElementKind::Epidermis && e.level == 0 ? m0 + frac * e.rest / E0 : m0;
         out[size_t(x)] = m - std::floor(m);
         lvl[size_t(x)] = float(e.level);
       }

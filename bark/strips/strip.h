@@ -26,9 +26,9 @@ struct Element {
   // that the per-step scans and propagation need not visit the fracture records.
   int32_t id = -1, up = -1, down = -1;
   bool free_end() const { return up < 0 || down < 0; }
-  double rest = 0;        // rest length l0 (m)
-  double stiffness = 0;   // element stiffness K (epidermis: R·w/l0, sec. 5.3; fracture: K_f(l0))
-  double threshold = 0;   // epidermis: jittered fracture threshold S_i on L/l0 (sec. 3.2.3)
+  double rest = 0;       // rest length l0 (m)
+  double stiffness = 0;  // element stiffness K (epidermis: R·w/l0, sec. 5.3; fracture: K_f(l0))
+  double threshold = 0;  // epidermis: jittered fracture threshold S_i on L/l0 (sec. 3.2.3)
 };
 
 static_assert(sizeof(Element) == 48, "the per-step passes stream every element: keep them small");
@@ -65,17 +65,15 @@ struct Strip {
   double width = 0;          // strip width w (m), along the growth axis
   std::vector<Element> elements;
   std::vector<ElementCold> cold;  // #elements on the strips of a StripModel (empty on a bare Strip)
-  std::vector<double> x;       // #elements node positions (left end of each element); open strips: + right end
-  std::vector<double> anchor;  // #nodes substrate locations a_i of the zero-rest-length springs (sec. 5.1)
-  std::vector<double> attach;  // #nodes attachment stiffness K_a at each node
+  std::vector<double> x;          // #elements node positions (left end of each element); open strips: + right end
+  std::vector<double> anchor;     // #nodes substrate locations a_i of the zero-rest-length springs (sec. 5.1)
+  std::vector<double> attach;     // #nodes attachment stiffness K_a at each node
   std::vector<FractureElement> fractures;
 
   size_t size() const { return elements.size(); }
   size_t nodes() const { return cyclic ? elements.size() : elements.size() + 1; }
   // Right end of element i (wraps by C on cyclic strips).
-  double right(size_t i) const {
-    return i + 1 < x.size() ? x[i + 1] : (cyclic ? x[0] + circumference : x.back());
-  }
+  double right(size_t i) const { return i + 1 < x.size() ? x[i + 1] : (cyclic ? x[0] + circumference : x.back()); }
   double length(size_t i) const { return right(i) - x[i]; }
   // Total rest length of the epidermis elements of level 0 (the original epidermis; the
   // paper's first observation: it is conserved).

@@ -13,7 +13,7 @@
 namespace phellem::bark {
 
 struct StripMetric {
-  double s = 0;                   // centre of the strip along the axis (m)
+  double s = 0;                    // centre of the strip along the axis (m)
   std::vector<double> bin_length;  // #M final arc length of each angular bin (m)
   std::vector<double> exponent;    // #M growth exponent 1 + d(s, θ); empty: homogeneous
   std::vector<double> width;       // #M local strip width / nominal width (sec. 5.3)

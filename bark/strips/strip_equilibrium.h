@@ -18,9 +18,9 @@ struct EquilibriumFactor {
   // is recomputed as -K · inv (the same product the elimination makes, so the same bits), one
   // array fewer for every step to stream.
   std::vector<double> inv;
-  std::vector<double> u;            // cyclic strips: A'^-1 u of Sherman–Morrison
-  double denominator = 0;           // cyclic strips: 1 + vᵀ A'^-1 u
-  double gamma = 0;                 // cyclic strips: γ = -A[0][0]
+  std::vector<double> u;   // cyclic strips: A'^-1 u of Sherman–Morrison
+  double denominator = 0;  // cyclic strips: 1 + vᵀ A'^-1 u
+  double gamma = 0;        // cyclic strips: γ = -A[0][0]
   bool valid = false;
   // When not valid: rows [0, kept) of inv still hold (their
   // elements and attachment did not change, e.g. before a break further along the strip), so

@@ -75,9 +75,7 @@ double StripModel::max_residual() const {
   return m;
 }
 
-double StripModel::scale_at_step(int t) const {
-  return std::pow(params_.growth_rate, -double(params_.steps - t));
-}
+double StripModel::scale_at_step(int t) const { return std::pow(params_.growth_rate, -double(params_.steps - t)); }
 
 double StripModel::width_factor(size_t j, double theta) const {
   const auto& w = domain_.strips[j].width;
@@ -224,7 +222,8 @@ void StripModel::update_attachment(size_t j) {
 double StripModel::attachment_share(const Strip& s, size_t i) const {
   // Half of an epidermis element's springs (sec. 5.1), held by each of its two nodes.
   const Element& e = s.elements[i];
-  return e.kind == ElementKind::Epidermis ? 0.5 * (params_.attachment / params_.element_length) * e.rest * s.cold[i].width_factor : 0.0;
+  return e.kind == ElementKind::Epidermis ? 0.5 * (params_.attachment / params_.element_length) * e.rest * s.cold[i].width_factor
+                                          : 0.0;
 }
 
 void StripModel::settle() {
@@ -566,7 +565,8 @@ void StripModel::sweep_block(int K) {
   for (const Strip& st : strips_) intact += st.fractures.empty();
   const int halves = n >= kSplitStrips && intact * 20 < n ? 2 : 1;
   const size_t first =
-      halves == 2 ? size_t(StreamRng(params_.seed ^ 0x73706c6974ULL, 0, uint64_t(step_ / kBlockSteps)).uniform() * double(n)) % n : 0;
+      halves == 2 ? size_t(StreamRng(params_.seed ^ 0x73706c6974ULL, 0, uint64_t(step_ / kBlockSteps)).uniform() * double(n)) % n
+                  : 0;
   const size_t count0 = halves == 2 ? n / 2 : n;
   const bool upward = (step_ / kBlockSteps) % 2 == 0;
   for (size_t q = 0; q < n; ++q) {

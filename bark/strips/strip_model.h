@@ -36,20 +36,20 @@
 #include <vector>
 
 #include "bark/strips/fracture_skeleton.h"
-#include "util/random.h"
-#include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip.h"
 #include "bark/strips/strip_domain.h"
+#include "bark/strips/strip_equilibrium.h"
 #include "bark/strips/strip_params.h"
+#include "util/random.h"
 
 namespace phellem::bark {
 
 struct StripStats {
   // created counts every break that started a fracture, scripted ones included.
   long long created = 0, scripted = 0, propagated = 0, merged = 0, refractured = 0;
-  long long arrived = 0;  // fractures continued from another cylinder (queue_arrival)
+  long long arrived = 0;                    // fractures continued from another cylinder (queue_arrival)
   long long max_breaks_per_strip_step = 0;  // largest number of breaks in one strip in one step
-  long long capped = 0;  // break loops stopped by the safety cap instead of the criterion (should stay 0)
+  long long capped = 0;                     // break loops stopped by the safety cap instead of the criterion (should stay 0)
 };
 
 // A location on another surface that fractures propagating off this one should continue
@@ -187,8 +187,9 @@ class StripModel {
   StripParams params_;
   std::vector<Strip> strips_;
   std::vector<std::vector<double>> cum_;  // per strip: #M+1 cumulative substrate arc length now
-  std::vector<char> uniform_;             // per strip: all bins alike and no dilatation (θ ∝ x through the circumference; cum_ not kept current)
-  std::vector<double> epidermis0_;       // per strip: original epidermis length E0
+  std::vector<char>
+      uniform_;  // per strip: all bins alike and no dilatation (θ ∝ x through the circumference; cum_ not kept current)
+  std::vector<double> epidermis0_;  // per strip: original epidermis length E0
   // Per strip, for the current step: breaks (created + scripted), scripted breaks, hardened
   // fracture elements. Summed into stats_ after the parallel phases.
   std::vector<long long> breaks_, scripted_, hardened_, capped_, arrived_;
@@ -229,13 +230,13 @@ class StripModel {
   };
   InglisSums sums_[2];
   std::vector<StripStats> strip_totals_;  // per strip: its counts since the last step() returned
-  std::vector<int64_t> root_width_;  // measure_fractures(): scratch
+  std::vector<int64_t> root_width_;       // measure_fractures(): scratch
   int step_ = 0;
   bool check_ = false;
-  std::vector<double> residual_;  // per strip, when check_
-  std::vector<EquilibriumFactor> factors_;   // per strip: reused while its stiffnesses are unchanged
-  std::vector<char> over_;                   // per strip: an element exceeded its threshold after growth
-  std::vector<char> pending_;                // per strip: the last step's hardening and plasticity are owed
+  std::vector<double> residual_;            // per strip, when check_
+  std::vector<EquilibriumFactor> factors_;  // per strip: reused while its stiffnesses are unchanged
+  std::vector<char> over_;                  // per strip: an element exceeded its threshold after growth
+  std::vector<char> pending_;               // per strip: the last step's hardening and plasticity are owed
   // Per strip: fracture elements with a free end this step and their element index (kept
   // current by break_element, the only place elements are inserted during the sweep), with
   // what propagation reads of them as the scan saw them: the sweep reads this list rather than
@@ -260,16 +261,16 @@ class StripModel {
   // One free side of a fracture end about to propagate (sec. 3.2.4), and where it would cut
   // its neighbour strip (aim()).
   struct PropagationSide {
-    size_t tip = 0;          // fracture element (index in its strip)
-    int32_t fe = -1;         // its fracture record
-    int32_t id = -1;         // its fracture id
-    bool up = true;          // towards the next strip (s+), else the previous
-    double theta = 0;        // final-shape angle of the tip
-    double jitter = 0;       // random angle added to the direction (radians)
+    size_t tip = 0;            // fracture element (index in its strip)
+    int32_t fe = -1;           // its fracture record
+    int32_t id = -1;           // its fracture id
+    bool up = true;            // towards the next strip (s+), else the previous
+    double theta = 0;          // final-shape angle of the tip
+    double jitter = 0;         // random angle added to the direction (radians)
     size_t target = SIZE_MAX;  // neighbour strip (SIZE_MAX: none)
-    bool advances = false;   // aim(): strained bark or a fracture's influence lets the tip advance
-    double x = 0;            // aim(): arc position of the cut on the target strip
-    size_t element = 0;      // aim(): the target element containing it
+    bool advances = false;     // aim(): strained bark or a fracture's influence lets the tip advance
+    double x = 0;              // aim(): arc position of the cut on the target strip
+    size_t element = 0;        // aim(): the target element containing it
     // aim(): it advances onto a fracture (a merge) or onto bark in tension (a break); any other
     // side changes nothing.
     bool lands = false;
@@ -293,10 +294,10 @@ class StripModel {
   // the other half's until the block's end.
   struct Sweep {
     int half = 0;
-    int step = 0;                       // the step being swept (draws, births, scripted fractures)
-    FractureSkeleton skeleton;          // the block's start + this half's merges and new ids
-    std::vector<double> count, width;   // Inglis measure by root, as this half sees it
-    int32_t made = 0;                   // new fracture ids made: base + made·stride + half
+    int step = 0;                      // the step being swept (draws, births, scripted fractures)
+    FractureSkeleton skeleton;         // the block's start + this half's merges and new ids
+    std::vector<double> count, width;  // Inglis measure by root, as this half sees it
+    int32_t made = 0;                  // new fracture ids made: base + made·stride + half
     int32_t base = 0, stride = 1;
     std::vector<std::pair<int32_t, int32_t>> merges;  // replayed on skeleton_ at the block's end
     std::vector<Crossing> crossings;
@@ -313,8 +314,8 @@ class StripModel {
     bool sharp(int32_t id, double strip_width, double inglis_threshold) const;
   };
   Sweep sweeps_[2];
-  Sweep replay_;             // the block's end: crossings replayed on the joined skeleton
-  std::vector<char> owner_;  // per strip: the half sweeping it in this block
+  Sweep replay_;                    // the block's end: crossings replayed on the joined skeleton
+  std::vector<char> owner_;         // per strip: the half sweeping it in this block
   std::vector<int> grown_step_[2];  // per half, per strip of its run: the last step grown for
   void start_sweep(Sweep& sw, int half, int halves);
   void join_sweeps(int halves);

@@ -78,9 +78,9 @@ std::optional<StripParamError> validate(const StripParams& p) {
     m.precision(4);
     const double l10 = p.steps * std::log10(p.growth_rate);  // the power itself may overflow a double
     const double e = std::floor(l10);
-    m << "growth_rate^steps = " << p.growth_rate << "^" << p.steps << " = " << std::pow(10.0, l10 - e) << "e+" << e
-      << " exceeds " << kMaxStripGrowth << " (the bark would start that many times smaller than the tree); growth_rate "
-      << p.growth_rate << " allows at most " << most << " steps";
+    m << "growth_rate^steps = " << p.growth_rate << "^" << p.steps << " = " << std::pow(10.0, l10 - e) << "e+" << e << " exceeds "
+      << kMaxStripGrowth << " (the bark would start that many times smaller than the tree); growth_rate " << p.growth_rate
+      << " allows at most " << most << " steps";
     return err("steps", m.str());
   }
   // Dilatation bulges raise the growth exponent to at most 1 + the sum of their positive
@@ -95,8 +95,8 @@ std::optional<StripParamError> validate(const StripParams& p) {
     std::snprintf(m, sizeof m,
                   "bulge amounts summing to %g raise the growth at their centre to growth_rate^(steps x (1 + %g)) = "
                   "10^%.1f, more than %g; with growth_rate %g and %d steps the amounts may sum to at most %.2f",
-                  bulges, bulges, p.steps * std::log10(p.growth_rate) * (1.0 + bulges), kMaxStripGrowth, p.growth_rate,
-                  p.steps, std::floor(100 * (std::log(kMaxStripGrowth) / (p.steps * std::log(p.growth_rate)) - 1.0)) / 100);
+                  bulges, bulges, p.steps * std::log10(p.growth_rate) * (1.0 + bulges), kMaxStripGrowth, p.growth_rate, p.steps,
+                  std::floor(100 * (std::log(kMaxStripGrowth) / (p.steps * std::log(p.growth_rate)) - 1.0)) / 100);
     return err("dilatation", m);
   }
   if (p.fracture_stiffness.empty()) return err("fracture_stiffness", "needs at least one value");
@@ -104,8 +104,7 @@ std::optional<StripParamError> validate(const StripParams& p) {
     const auto& c = p.fracture_stiffness[i];
     if (!(c.y() > 0) || !std::isfinite(c.y()) || !(c.x() >= 0))
       return err("fracture_stiffness", "points must be [rest length >= 0 (m), stiffness > 0]");
-    if (i > 0 && !(c.x() > p.fracture_stiffness[i - 1].x()))
-      return err("fracture_stiffness", "rest lengths must increase");
+    if (i > 0 && !(c.x() > p.fracture_stiffness[i - 1].x())) return err("fracture_stiffness", "rest lengths must increase");
   }
   if (!(p.attachment >= 0) || !std::isfinite(p.attachment)) return err("attachment", "must be >= 0");
   if (!(p.threshold_noise >= 0 && p.threshold_noise < 1)) return err("threshold_noise", "must be in [0, 1)");
@@ -133,9 +132,9 @@ std::optional<StripParamError> validate(const StripParams& p) {
 StripParamError threshold_error(const StripParams& p, const ThresholdRange& r, double softest_epidermis) {
   std::ostringstream m;
   m.precision(6);
-  m << "S = " << p.S() << " is outside its valid range (" << r.low << ", " << r.high << "] for growth_rate "
-    << p.growth_rate << ", threshold_noise " << p.threshold_noise << ", fracture_stiffness up to "
-    << p.max_fracture_stiffness() << " and softest epidermis element " << softest_epidermis
+  m << "S = " << p.S() << " is outside its valid range (" << r.low << ", " << r.high << "] for growth_rate " << p.growth_rate
+    << ", threshold_noise " << p.threshold_noise << ", fracture_stiffness up to " << p.max_fracture_stiffness()
+    << " and softest epidermis element " << softest_epidermis
     << " (Lefebvre & Neyret 2002 sec. 3.2.3: below it broken bark breaks again without end, above it unbroken "
        "bark never breaks)";
   return {"threshold", m.str()};

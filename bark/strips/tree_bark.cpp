@@ -36,8 +36,7 @@ size_t strip_at(const StripModel& m, double s) { return m.strip_coords(s, 0.0).f
 
 }  // namespace
 
-TreeStripBark::TreeStripBark(std::vector<TreeCylinder> cylinders, const StripParams& params)
-    : cylinders_(std::move(cylinders)) {
+TreeStripBark::TreeStripBark(std::vector<TreeCylinder> cylinders, const StripParams& params) : cylinders_(std::move(cylinders)) {
   for (size_t k = 0; k < cylinders_.size(); ++k) {
     StripParams p = params;
     // Every limb is its own instance of the bark; scripted fractures are placed on the trunk.

@@ -19,13 +19,13 @@ namespace phellem::bark {
 
 struct TreeCylinder {
   std::shared_ptr<const GeneralizedCylinder> cylinder;
-  int parent = -1;     // index of the parent cylinder (-1: the trunk)
-  double attach = 0;   // where it leaves the parent, as a fraction of the parent's length
+  int parent = -1;    // index of the parent cylinder (-1: the trunk)
+  double attach = 0;  // where it leaves the parent, as a fraction of the parent's length
 };
 
 // One fracture continued across a junction (for statistics and tests).
 struct JunctionCrossing {
-  int from = 0, to = 0;          // cylinder indices
+  int from = 0, to = 0;            // cylinder indices
   Eigen::Vector3d at_from, at_to;  // 3D points of the tip and of the new fracture
   int step = 0;
 };
@@ -52,8 +52,8 @@ class TreeStripBark {
  private:
   struct Junction {
     int parent = 0, child = 0;
-    size_t parent_first = 0, parent_last = 0;  // parent strips around the emergence line
-    size_t child_last = 0;                     // child strips [0, child_last) near its base
+    size_t parent_first = 0, parent_last = 0;         // parent strips around the emergence line
+    size_t child_last = 0;                            // child strips [0, child_last) near its base
     std::set<int32_t> sent_to_child, sent_to_parent;  // fracture roots already continued
   };
   void transfer(Junction& j, bool parent_to_child);

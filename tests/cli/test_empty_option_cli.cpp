@@ -37,7 +37,8 @@ TEST(EmptyOptionCli, EveryOptionRefusesAnEmptyValue) {
   for (const Case& c : cases) {
     const auto r = test::run_phellem(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
-    EXPECT_NE(r.output.find("phellem: error: <command line>: " + c.option + ": "), std::string::npos) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find("phellem: error: <command line>: " + c.option + ": "), std::string::npos) << c.args << "\n"
+                                                                                                      << r.output;
   }
   EXPECT_FALSE(std::filesystem::exists(d + "/x.exr"));
 }

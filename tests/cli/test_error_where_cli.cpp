@@ -35,7 +35,7 @@ test::CommandResult run_bare(const std::string& args) {
 }
 
 struct Case {
-  std::string what;    // the failure
+  std::string what;  // the failure
   test::CommandResult result;
   std::string prefix;  // "<file>: <where>: " expected at the start of the message
 };
@@ -77,20 +77,26 @@ TEST(ErrorWhereCli, EveryMessageHasFileWhereAndWhat) {
       {"bad --seed", test::run_phellem("render --seed -1"), "<command line>: --seed: "},
       {"missing scene", test::run_phellem("render " + d + "/none.json -o " + d + "/o.exr"), d + "/none.json: open: "},
       {"JSON syntax", test::run_phellem("render " + d + "/broken.gltf -o " + d + "/o.exr"), d + "/broken.gltf: line 1, column "},
-      {"overflowing number", test::run_phellem("render " + d + "/overflow.json -o " + d + "/o.exr"), d + "/overflow.json: /camera/fov_deg: "},
+      {"overflowing number", test::run_phellem("render " + d + "/overflow.json -o " + d + "/o.exr"),
+       d + "/overflow.json: /camera/fov_deg: "},
       {"duplicate key", test::run_phellem("render " + d + "/dup.json -o " + d + "/o.exr"), d + "/dup.json: /render/spp: "},
       {"OBJ without faces", test::run_phellem("render " + d + "/obj.json -o " + d + "/o.exr"), d + "/nofaces.obj: faces: "},
       {"glTF without meshes", test::run_phellem("render " + d + "/nomesh.json -o " + d + "/o.exr"), d + "/nomesh.gltf: meshes: "},
       {"broken glTF", test::run_phellem("render " + d + "/broken.json -o " + d + "/o.exr"), d + "/broken.gltf: read: "},
-      {"EXR not writable", test::run_phellem("render " + d + "/tiny.json -o /proc/phellem_never.exr"), "/proc/phellem_never.exr: open: "},
-      {"PNG not writable", test::run_phellem("render " + d + "/tiny.json --png /proc/phellem_never.png"), "/proc/phellem_never.png: open: "},
-      {"output is a folder", test::run_phellem("render " + d + "/tiny.json -o " + d + "/taken.exr"), d + "/taken.exr: -o: "},  // refused before any work
-      {"output folder impossible", test::run_phellem("render " + d + "/tiny.json -o /proc/no/x.exr"), "/proc/no/x.exr: -o: "},  // refused before any work
+      {"EXR not writable", test::run_phellem("render " + d + "/tiny.json -o /proc/phellem_never.exr"),
+       "/proc/phellem_never.exr: open: "},
+      {"PNG not writable", test::run_phellem("render " + d + "/tiny.json --png /proc/phellem_never.png"),
+       "/proc/phellem_never.png: open: "},
+      {"output is a folder", test::run_phellem("render " + d + "/tiny.json -o " + d + "/taken.exr"),
+       d + "/taken.exr: -o: "},  // refused before any work
+      {"output folder impossible", test::run_phellem("render " + d + "/tiny.json -o /proc/no/x.exr"),
+       "/proc/no/x.exr: -o: "},  // refused before any work
       {"stats not writable", test::run_phellem("render " + d + "/tiny.json -o " + d + "/o.exr --stats /proc/phellem_stats.json"),
        "/proc/phellem_stats.json: --stats: "},
       {"simulate folder impossible", test::run_phellem("simulate " + d + "/stress.json -o /proc/no/out"), "/proc/no/out: -o: "},
       {"simulate mesh not writable", test::run_phellem("simulate " + d + "/stress.json -o /proc"), "/proc/t.glb: write: "},
-      {"simulate without bark", test::run_phellem("simulate " + d + "/nobark.json -o " + d + "/sim"), d + "/nobark.json: /objects: "},
+      {"simulate without bark", test::run_phellem("simulate " + d + "/nobark.json -o " + d + "/sim"),
+       d + "/nobark.json: /objects: "},
       {"unknown view", test::run_phellem("render --view NoSuchView --png x.png"), "<command line>: --view: "},
   };
   for (const auto& c : cases) expect_three_parts(c);

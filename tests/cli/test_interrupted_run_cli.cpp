@@ -106,7 +106,8 @@ TEST_P(InterruptedRun, LeavesNoTemporaryAndTheEarlierOutputsWhole) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, InterruptedRun,
-                         ::testing::Values(Kill{SIGTERM, ".exr"}, Kill{SIGTERM, ".png"}, Kill{SIGINT, ".exr"}, Kill{SIGINT, ".png"}),
+                         ::testing::Values(Kill{SIGTERM, ".exr"}, Kill{SIGTERM, ".png"}, Kill{SIGINT, ".exr"},
+                                           Kill{SIGINT, ".png"}),
                          [](const ::testing::TestParamInfo<Kill>& i) {
                            return std::string(i.param.signal == SIGTERM ? "Sigterm" : "Sigint") + "While" +
                                   (std::string(i.param.when) == ".exr" ? "Exr" : "Png");

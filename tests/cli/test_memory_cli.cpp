@@ -78,11 +78,15 @@ TEST(MemoryCli, AMillionStripsAreRefusedAtStripWidth) {
 // 40 branches, each a modest strip bark (5.6·10^5 elements), together ~10 GiB.
 TEST(MemoryCli, FortyBranchesAreRefusedAtBranches) {
   const std::string dir = test::temp_dir("memory_branches");
-  nlohmann::json tree = strip_tree({{0, 0, 0}, {0, 5, 0}}, 0.3,
-                                   {{"model", "strips"}, {"strip_width", 0.002}, {"element_length", 0.004}, {"field_resolution", {256, 256}}});
+  nlohmann::json tree =
+      strip_tree({{0, 0, 0}, {0, 5, 0}}, 0.3,
+                 {{"model", "strips"}, {"strip_width", 0.002}, {"element_length", 0.004}, {"field_resolution", {256, 256}}});
   for (int i = 0; i < 40; ++i)
-    tree["objects"][0]["branches"].push_back(
-        {{"attach", 0.1 + 0.8 * i / 40.0}, {"azimuth_deg", (i * 137) % 360}, {"angle_deg", 50}, {"length", 8}, {"radius", {0.15, 0.1}}});
+    tree["objects"][0]["branches"].push_back({{"attach", 0.1 + 0.8 * i / 40.0},
+                                              {"azimuth_deg", (i * 137) % 360},
+                                              {"angle_deg", 50},
+                                              {"length", 8},
+                                              {"radius", {0.15, 0.1}}});
   const std::string scene = write_scene(dir, tree);
   const Outcome r = run("render " + scene + " -o " + dir + "/out.exr --spp 1");
   expect_refused(r, "/objects/0/branches: needs about");
@@ -108,10 +112,12 @@ TEST(MemoryCli, FieldResolution8192IsRefusedAtFieldResolution) {
 // A 2·10^7-triangle stress mesh (the most a procedural mesh may ask for): ~22 GiB to crack.
 TEST(MemoryCli, A20MillionTriangleStressMeshIsRefusedAtTriangles) {
   const std::string dir = test::temp_dir("memory_stress");
-  const std::string scene = write_scene(
-      dir, {{"objects",
-             {{{"type", "mesh"}, {"name", "m"}, {"procedural", {{"shape", "trunk"}, {"triangles", 20000000}, {"radius", 0.2}, {"height", 2}}},
-               {"bark", {{"model", "stress"}}}}}}});
+  const std::string scene =
+      write_scene(dir, {{"objects",
+                         {{{"type", "mesh"},
+                           {"name", "m"},
+                           {"procedural", {{"shape", "trunk"}, {"triangles", 20000000}, {"radius", 0.2}, {"height", 2}}},
+                           {"bark", {{"model", "stress"}}}}}}});
   const Outcome r = run("simulate " + scene + " -o " + dir + "/out");
   expect_refused(r, "/objects/0/procedural/triangles: needs about");
   const Outcome g = run("render " + scene + " -o " + dir + "/out.exr --spp 1");
@@ -123,7 +129,8 @@ TEST(MemoryCli, A20MillionTriangleStressMeshIsRefusedAtTriangles) {
 TEST(MemoryCli, AThousandMetreTrunkIsRefusedAtOnce) {
   const std::string dir = test::temp_dir("memory_trunk");
   const std::string scene = write_scene(dir, strip_tree({{0, 0, 0}, {0, 1000, 0}}, 0.3, {{"model", "strips"}}));
-  for (const std::string cmd : {"render " + scene + " -o " + dir + "/out.exr --spp 1", "simulate " + scene + " -o " + dir + "/out"}) {
+  for (const std::string& cmd :
+       {"render " + scene + " -o " + dir + "/out.exr --spp 1", "simulate " + scene + " -o " + dir + "/out"}) {
     const Outcome r = run(cmd);
     expect_refused(r, "/objects/0/bark/element_length: element_length: must be at least");
   }

@@ -17,7 +17,8 @@ const char* kSphere = R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "r
                           "lights": [{"type": "environment", "color": [1, 1, 1]}]})";
 
 // A small strip-bark tree (a trunk and a branch), quick to simulate and to grow.
-const char* kStripTree = R"({"render": {"seed": 3}, "camera": {"position": [0, 0.15, 0.6], "look_at": [0, 0.15, 0], "fov_deg": 30},
+const char* kStripTree =
+    R"({"render": {"seed": 3}, "camera": {"position": [0, 0.15, 0.6], "look_at": [0, 0.15, 0], "fov_deg": 30},
     "lights": [{"type": "environment", "color": [1, 1, 1]}],
     "objects": [{"type": "tree", "name": "t", "axis": [[0, 0, 0], [0, 0.3, 0]], "radius": [0.05, 0.04],
                  "bark": {"model": "strips", "preset": "fissured", "steps": 60, "growth_rate": 1.01, "strip_width": 0.01}})";
@@ -102,8 +103,9 @@ TEST(OutputPathsCli, ASimulationThatFailsHalfwayKeepsTheEarlierOutputs) {
                     stats = test::read_text(d + "/stats.json");
   ASSERT_FALSE(field.empty());
   test::write_text(d + "/fin.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n");
-  test::write_text(d + "/scene.json", R"({"objects": [)" + tree +
-                                          R"(, {"type": "mesh", "name": "fin", "file": "fin.obj", "bark": {"model": "stress"}}]})");
+  test::write_text(
+      d + "/scene.json",
+      R"({"objects": [)" + tree + R"(, {"type": "mesh", "name": "fin", "file": "fin.obj", "bark": {"model": "stress"}}]})");
   const auto r = test::run_phellem(simulate + " --seed 2");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("non-manifold"), std::string::npos) << r.output;
@@ -120,8 +122,10 @@ TEST(OutputPathsCli, FrameSequencesCheckTheirOutputsBeforeAnyWork) {
   test::write_text(d + "/file.txt", "a file, not a folder");
   fs::create_directories(d + "/f_01.exr");
   const std::vector<std::pair<std::string, Refusal>> cases = {
-      {"turntable " + d + "/sphere.json", {"-o " + d + "/nofolder/f_%02d.exr", d + "/nofolder/f_00.exr: -o: folder does not exist"}},
-      {"turntable " + d + "/sphere.json", {"-o " + d + "/file.txt/f_%02d.exr --png", d + "/file.txt/f_00.exr: -o: " + d + "/file.txt is not a folder"}},
+      {"turntable " + d + "/sphere.json",
+       {"-o " + d + "/nofolder/f_%02d.exr", d + "/nofolder/f_00.exr: -o: folder does not exist"}},
+      {"turntable " + d + "/sphere.json",
+       {"-o " + d + "/file.txt/f_%02d.exr --png", d + "/file.txt/f_00.exr: -o: " + d + "/file.txt is not a folder"}},
       {"turntable " + d + "/sphere.json", {"-o " + d + "/f_%02d.exr", d + "/f_01.exr: -o: is a folder, not a file"}},
       {"growth " + d + "/tree.json", {"-o " + d + "/nofolder/f_%02d.exr", d + "/nofolder/f_00.exr: -o: folder does not exist"}},
   };
@@ -136,7 +140,8 @@ TEST(OutputPathsCli, FrameSequencesCheckTheirOutputsBeforeAnyWork) {
 TEST(OutputPathsCli, FrameSequencesCommitEveryFrameTogether) {
   const std::string d = test::temp_dir("outputs_frames_ok");
   test::write_text(d + "/sphere.json", kSphere);
-  const auto r = test::run_phellem("turntable " + d + "/sphere.json --frames 3 --res 16x16 --spp 1 --png -o " + d + "/f_%02d.exr");
+  const auto r =
+      test::run_phellem("turntable " + d + "/sphere.json --frames 3 --res 16x16 --spp 1 --png -o " + d + "/f_%02d.exr");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* f : {"f_00.exr", "f_01.exr", "f_02.exr", "f_00.png", "f_01.png", "f_02.png"})
     EXPECT_TRUE(fs::is_regular_file(d + "/" + f)) << f;

@@ -28,7 +28,8 @@ std::vector<float> read_pixels(const std::string& path, OIIO::ImageSpec* spec) {
 std::string scene_with_bark(const std::string& bark) {
   return R"({"render": {"seed": 3}, "objects": [{"type": "tree", "name": "t", "axis": [[0, 0, 0], [0, 0.3, 0]],
               "radius": [0.05, 0.04], "branches": [{"attach": 0.6, "length": 0.15, "radius": [0.02, 0.015]}],
-              "bark": )" + bark + "}]}";
+              "bark": )" +
+         bark + "}]}";
 }
 
 TEST(SimulateCli, WritesAFractureFieldPerCylinderWithTheDocumentedChannels) {
@@ -36,7 +37,8 @@ TEST(SimulateCli, WritesAFractureFieldPerCylinderWithTheDocumentedChannels) {
   const std::string scene = dir + "/scene.json";
   test::write_text(scene, scene_with_bark(R"({"model": "strips", "preset": "fissured", "steps": 60, "growth_rate": 1.01,
                                               "strip_width": 0.01})"));
-  const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --quiet --stats " + dir + "/stats.json");
+  const auto r =
+      test::run_phellem("simulate " + scene + " -o " + dir + "/out --res 64x96 --quiet --stats " + dir + "/stats.json");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* part : {"t_trunk.exr", "t_branch1.exr"}) {
     OIIO::ImageSpec spec;
@@ -44,8 +46,8 @@ TEST(SimulateCli, WritesAFractureFieldPerCylinderWithTheDocumentedChannels) {
     ASSERT_FALSE(px.empty()) << part;
     EXPECT_EQ(spec.width, 64);
     EXPECT_EQ(spec.height, 96);
-    std::vector<std::string> want = {"color.R", "color.G", "color.B", "opening", "depth", "uv0.u", "uv0.v",
-                                     "fracture_id", "age", "level", "interior"};
+    std::vector<std::string> want = {"color.R", "color.G",     "color.B", "opening", "depth",   "uv0.u",
+                                     "uv0.v",   "fracture_id", "age",     "level",   "interior"};
     std::vector<std::string> got = spec.channelnames;  // OpenEXR stores channels sorted: compare as sets
     std::sort(want.begin(), want.end());
     std::sort(got.begin(), got.end());
@@ -103,8 +105,9 @@ TEST(SimulateCli, ThresholdOutsideItsRangeIsRefusedWithTheRange) {
   test::write_text(scene, scene_with_bark(R"({"model": "strips", "growth_rate": 1.01, "threshold": 1.5})"));
   const auto r = test::run_phellem("simulate " + scene + " -o " + dir + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("phellem: error: " + scene + ": /objects/0/bark/threshold: threshold: S = 1.5 is outside its valid range ("),
-            std::string::npos)
+  EXPECT_NE(
+      r.output.find("phellem: error: " + scene + ": /objects/0/bark/threshold: threshold: S = 1.5 is outside its valid range ("),
+      std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find(", 1.01]"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/t_trunk.exr"));
@@ -117,7 +120,8 @@ TEST(SimulateCli, BadBarkSettingsNameTheirPath) {
     std::string bark, expect;
   };
   const std::vector<Case> cases = {
-      {R"({"model": "strips", "preset": "birch"})", "/objects/0/bark/preset: unknown preset \"birch\"; allowed: furrowed, fissured, plated, brittle, banded"},
+      {R"({"model": "strips", "preset": "birch"})",
+       "/objects/0/bark/preset: unknown preset \"birch\"; allowed: furrowed, fissured, plated, brittle, banded"},
       {R"({"model": "strips", "orientation": "diagonal"})",
        "/objects/0/bark/orientation: unknown orientation \"diagonal\"; allowed: vertical, horizontal"},
       {R"({"model": "waves"})", "/objects/0/bark/model: unknown bark model"},
@@ -159,7 +163,8 @@ std::string grow_three_frames(const std::string& dir, const std::string& preset)
   test::write_text(scene, R"({"camera": {"position": [0, 0.15, 0.6], "look_at": [0, 0.15, 0], "fov_deg": 30},
     "lights": [{"type": "environment", "color": [1, 1, 1]}],
     "objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 0.3, 0]], "radius": [0.05],
-                 "bark": {"model": "strips", "preset": ")" + preset + R"(", "steps": 60, "growth_rate": 1.01, "strip_width": 0.01}}]})");
+                 "bark": {"model": "strips", "preset": ")" +
+                              preset + R"(", "steps": 60, "growth_rate": 1.01, "strip_width": 0.01}}]})");
   const auto r = test::run_phellem("growth " + scene + " --frames 3 -o " + dir + "/f_%02d.exr --res 48x48 --spp 1 --quiet");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return scene;
@@ -231,7 +236,8 @@ TEST(SimulateCli, EpidermisImageSampleColoursTheBarkAndABadOneIsNamed) {
     }
   EXPECT_GT(epidermis, 100);
 
-  test::write_text(scene, scene_with_bark(R"({"model": "strips", "dressing": {"fracture": {"image": "missing.png", "size": [0.1, 0.1]}}})"));
+  test::write_text(
+      scene, scene_with_bark(R"({"model": "strips", "dressing": {"fracture": {"image": "missing.png", "size": [0.1, 0.1]}}})"));
   const auto bad = test::run_phellem("simulate " + scene + " -o " + dir + "/out --quiet");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.output.find("/objects/0/bark/dressing/fracture/image"), std::string::npos) << bad.output;

@@ -9,16 +9,17 @@
 #include <nlohmann/json.hpp>
 
 #include "io/cracked_mesh_io.h"
-#include "util/errors.h"
 #include "io/mesh_io.h"
 #include "tests/support/test_util.h"
+#include "util/errors.h"
 
 namespace phellem {
 namespace {
 
 std::string scene_with(const std::string& object) { return R"({"render": {"seed": 4}, "objects": [)" + object + "]}"; }
 
-const char* kTrunk = R"({"type": "mesh", "name": "trunk", "procedural": {"shape": "trunk", "triangles": 3000, "radius": 0.1, "height": 0.6},
+const char* kTrunk =
+    R"({"type": "mesh", "name": "trunk", "procedural": {"shape": "trunk", "triangles": 3000, "radius": 0.1, "height": 0.6},
     "bark": {"model": "stress", "preset": "pine", "iterations": 25})";
 
 nlohmann::json read_json(const std::string& path) {
@@ -60,7 +61,8 @@ TEST(SimulateStressCli, WritesACrackedMeshThatReadsBackAndASummary) {
   EXPECT_EQ(s["triangles_out"].get<size_t>(), c.mesh.triangles.size());
   EXPECT_EQ(s["iterations"], 25);
   const nlohmann::json st = read_json(dir + "/stats.json");
-  for (const char* key : {"model", "triangles_in", "triangles_out", "iterations", "cracks", "crack_edges"}) EXPECT_TRUE(st.contains(key)) << key;
+  for (const char* key : {"model", "triangles_in", "triangles_out", "iterations", "cracks", "crack_edges"})
+    EXPECT_TRUE(st.contains(key)) << key;
   EXPECT_TRUE(st["time_s"].contains("preprocess"));
   EXPECT_TRUE(st["time_s"].contains("simulate"));
   EXPECT_GT(st["triangles_out"].get<long>(), st["triangles_in"].get<long>());
@@ -70,7 +72,8 @@ TEST(SimulateStressCli, SameFileOnOneAndTwoThreads) {
   const std::string dir = test::temp_dir("stress_det");
   test::write_text(dir + "/scene.json", scene_with(std::string(kTrunk) + "}"));
   for (int t : {1, 2}) {
-    const auto r = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out" + std::to_string(t) + " --quiet --threads " + std::to_string(t));
+    const auto r = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out" + std::to_string(t) +
+                                     " --quiet --threads " + std::to_string(t));
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   auto bytes = [](const std::string& p) {
@@ -101,7 +104,10 @@ TEST(SimulateStressCli, BadSettingsAndMeshesAreRefusedAndOutputsKept) {
       {R"({"model": "stress", "cracks_per_iteration": -3})", "cracks_per_iteration"},
   };
   for (const Case& c : cases) {
-    test::write_text(dir + "/scene.json", scene_with(R"({"type": "mesh", "name": "trunk", "procedural": {"shape": "trunk", "triangles": 500}, "bark": )" + c.bark + "}"));
+    test::write_text(
+        dir + "/scene.json",
+        scene_with(R"({"type": "mesh", "name": "trunk", "procedural": {"shape": "trunk", "triangles": 500}, "bark": )" + c.bark +
+                   "}"));
     const auto r = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out --quiet");
     EXPECT_EQ(r.exit_code, 2) << c.bark;
     EXPECT_NE(r.output.find("phellem: error: "), std::string::npos) << r.output;
@@ -110,7 +116,8 @@ TEST(SimulateStressCli, BadSettingsAndMeshesAreRefusedAndOutputsKept) {
   // A non-manifold mesh file: three triangles on one edge, named in the error.
   const std::string obj = dir + "/fin.obj";
   test::write_text(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n");
-  test::write_text(dir + "/scene.json", scene_with(R"({"type": "mesh", "name": "trunk", "file": "fin.obj", "bark": {"model": "stress"}})"));
+  test::write_text(dir + "/scene.json",
+                   scene_with(R"({"type": "mesh", "name": "trunk", "file": "fin.obj", "bark": {"model": "stress"}})"));
   const auto r = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("fin.obj: triangle 2: makes the mesh non-manifold"), std::string::npos) << r.output;
@@ -145,7 +152,8 @@ namespace phellem {
 
 TEST(SimulateStressCli, AnEdgeLengthThatWouldExplodeTheMeshIsRefused) {
   const std::string dir = test::temp_dir("stress_edge");
-  test::write_text(dir + "/scene.json", scene_with(R"({"type": "mesh", "name": "m", "procedural": {"shape": "trunk", "triangles": 500},
+  test::write_text(dir + "/scene.json",
+                   scene_with(R"({"type": "mesh", "name": "m", "procedural": {"shape": "trunk", "triangles": 500},
       "bark": {"model": "stress", "preprocess": {"edge_length": 0.00001}}})"));
   const auto r = test::run_phellem("simulate " + dir + "/scene.json -o " + dir + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2);

@@ -49,7 +49,7 @@ TEST(StripGrowthCli, DilatationThatOverflowsTheGrowthIsRefused) {
 }
 
 TEST(StripGrowthCli, StepsAllowedByAGrowthRate) {
-  EXPECT_EQ(bark::max_steps_for_growth(1.5), 34);       // 1.5^34 = 9.7e5, 1.5^35 = 1.46e6
+  EXPECT_EQ(bark::max_steps_for_growth(1.5), 34);        // 1.5^34 = 9.7e5, 1.5^35 = 1.46e6
   EXPECT_EQ(bark::max_steps_for_growth(10.0 / 9), 131);  // log(1e6) / log(10/9) = 131.1
   EXPECT_EQ(bark::max_steps_for_growth(1.0012), 11519);
   EXPECT_EQ(bark::max_steps_for_growth(1.000001), 1000000);  // the steps limit itself

@@ -9,11 +9,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/render_helpers.h"
-#include "util/errors.h"
 #include "io/mesh_io.h"
 #include "renderer/textures.h"
+#include "tests/support/render_helpers.h"
 #include "tests/support/test_util.h"
+#include "util/errors.h"
 
 namespace phellem {
 namespace {
@@ -54,10 +54,10 @@ TestGltf make_gltf(const std::string& texture_uri) {
   const std::vector<float> nrm = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
   const std::vector<float> uv = {0, 1, 1, 1, 1, 0, 0, 0};
   const std::vector<uint16_t> idx = {0, 1, 2, 0, 2, 3};
-  append(g.bin, pos);   // 0..48
-  append(g.bin, nrm);   // 48..96
-  append(g.bin, uv);    // 96..128
-  append(g.bin, idx);   // 128..140
+  append(g.bin, pos);  // 0..48
+  append(g.bin, nrm);  // 48..96
+  append(g.bin, uv);   // 96..128
+  append(g.bin, idx);  // 128..140
   g.bin.resize(140);
   using nlohmann::json;
   json& d = g.doc;
@@ -67,16 +67,19 @@ TestGltf make_gltf(const std::string& texture_uri) {
                                   {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 48}},
                                   {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 32}},
                                   {{"buffer", 0}, {"byteOffset", 128}, {"byteLength", 12}}});
-  d["accessors"] = json::array({{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}, {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
-                                {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-                                {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
-                                {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}});
+  d["accessors"] = json::array(
+      {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}, {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
+       {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+       {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
+       {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}});
   json prim = {{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}}, {"indices", 3}, {"material", 0}};
   json prim2 = prim;
   prim2["material"] = 1;
   d["meshes"] = json::array({{{"primitives", json::array({prim, prim2})}}});
-  d["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.25, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}},
-                                {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 1.0}}}}});
+  d["materials"] =
+      json::array({{{"pbrMetallicRoughness",
+                     {{"baseColorFactor", {0.5, 0.25, 1.0, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}},
+                   {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 1.0}}}}});
   d["textures"] = json::array({{{"source", 0}}});
   d["images"] = json::array({{{"uri", texture_uri}}});
   d["nodes"] = json::array({{{"mesh", 0}, {"translation", {0, 0, -1}}, {"children", {1}}},
@@ -115,7 +118,9 @@ std::string write_glb(const std::string& dir, const TestGltf& g, size_t truncate
   std::vector<unsigned char> bin = g.bin;
   while (bin.size() % 4) bin.push_back(0);
   std::vector<unsigned char> out;
-  auto u32 = [&](uint32_t v) { for (int i = 0; i < 4; ++i) out.push_back((v >> (8 * i)) & 0xFF); };
+  auto u32 = [&](uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back((v >> (8 * i)) & 0xFF);
+  };
   u32(0x46546C67);
   u32(2);
   u32(uint32_t(12 + 8 + json.size() + 8 + bin.size()));
@@ -156,7 +161,8 @@ TEST(Gltf, SpecularExtensionSetsTheCoatStrength) {
   EXPECT_FLOAT_EQ(load_gltf(write_gltf(dir, g)).materials[0].specular, 0.5f);  // glTF default F0 0.04
   g.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularFactor", 0.0}}}};
   EXPECT_FLOAT_EQ(load_gltf(write_gltf(dir, g)).materials[0].specular, 0.0f);  // pure Lambert
-  g.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {0.2, 0.8, 0.4}}}}};
+  g.doc["materials"][0]["extensions"] = {
+      {"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {0.2, 0.8, 0.4}}}}};
   EXPECT_FLOAT_EQ(load_gltf(write_gltf(dir, g)).materials[0].specular, 0.2f);
   g.doc["materials"][0]["extensions"] = {{"KHR_materials_specular", {{"specularFactor", -1.0}}}};
   try {
@@ -238,8 +244,14 @@ TEST(Gltf, MalformedFilesExitTwoWithAMessage) {
          return write_gltf(d, g);
        },
        "bufferViews"},
-      {"not json", [](const std::string& d) { test::write_text(d + "/model.gltf", "{ this is not json"); return d + "/model.gltf"; }, "invalid glTF"},
-      {"missing texture file", [](const std::string& d) { return write_gltf(d, make_gltf("nothere.png")); }, "image file not found"},
+      {"not json",
+       [](const std::string& d) {
+         test::write_text(d + "/model.gltf", "{ this is not json");
+         return d + "/model.gltf";
+       },
+       "invalid glTF"},
+      {"missing texture file", [](const std::string& d) { return write_gltf(d, make_gltf("nothere.png")); },
+       "image file not found"},
   };
   for (const auto& c : cases) {
     const std::string dir = test::temp_dir(std::string("gltf_bad_") + std::to_string(&c - cases.data()));
@@ -251,7 +263,8 @@ TEST(Gltf, MalformedFilesExitTwoWithAMessage) {
       EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << c.name << ": " << e.what();
       EXPECT_EQ(e.file(), file);
     }
-    test::write_text(dir + "/scene.json", std::string(R"({"objects": [{"type": "mesh", "file": ")") + file + R"("}], "render": {"resolution": [8, 8], "spp": 1}})");
+    test::write_text(dir + "/scene.json", std::string(R"({"objects": [{"type": "mesh", "file": ")") + file +
+                                              R"("}], "render": {"resolution": [8, 8], "spp": 1}})");
     const auto r = test::run_phellem("render " + dir + "/scene.json -o " + dir + "/o.exr");
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.output;
     EXPECT_EQ(r.output.rfind("phellem: error: " + file, 0), 0u) << c.name << ": " << r.output;

@@ -76,7 +76,9 @@ std::string write_glb(const std::string& dir, const Gltf& g, uint32_t version) {
   std::string text = g.doc.dump();
   while (text.size() % 4) text.push_back(' ');
   std::vector<unsigned char> out;
-  auto u32 = [&](uint32_t v) { for (int i = 0; i < 4; ++i) out.push_back((v >> (8 * i)) & 0xFF); };
+  auto u32 = [&](uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back((v >> (8 * i)) & 0xFF);
+  };
   u32(0x46546C67);
   u32(version);
   u32(uint32_t(12 + 8 + text.size() + 8 + g.bin.size()));
@@ -201,7 +203,8 @@ TEST(GltfValidation, BadElementsExitTwoNamingTheElement) {
     } catch (const std::exception& e) {
       ADD_FAILURE() << c.name << ": not a UserError: " << e.what();
     }
-    test::write_text(dir + "/scene.json", R"({"objects": [{"type": "mesh", "file": ")" + file + R"("}], "render": {"resolution": [8, 8], "spp": 1}})");
+    test::write_text(dir + "/scene.json",
+                     R"({"objects": [{"type": "mesh", "file": ")" + file + R"("}], "render": {"resolution": [8, 8], "spp": 1}})");
     const auto r = test::run_phellem_limited("render " + dir + "/scene.json -o " + dir + "/o.exr", 4096, 120);
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.output;
     EXPECT_EQ(r.output.rfind("phellem: error: " + file + ": " + c.where + ": ", 0), 0u) << c.name << ": " << r.output;

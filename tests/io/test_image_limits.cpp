@@ -93,7 +93,8 @@ TEST(ImageLimits, RenderRefusesAHugeTexture) {
 }
 
 std::string tree_with_bark(const std::string& bark) {
-  return R"({"objects": [{"type": "tree", "name": "t", "axis": [[0, 0, 0], [0, 0.3, 0]], "radius": [0.05, 0.04], "bark": )" + bark + "}]}";
+  return R"({"objects": [{"type": "tree", "name": "t", "axis": [[0, 0, 0], [0, 0.3, 0]], "radius": [0.05, 0.04], "bark": )" +
+         bark + "}]}";
 }
 
 TEST(ImageLimits, SimulateRefusesHugeSceneImages) {

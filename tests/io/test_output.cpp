@@ -13,14 +13,17 @@ namespace {
 
 TEST(Output, ExrHasTheDocumentedLayersAndPngIsDisplayReferred) {
   const std::string dir = test::temp_dir("output");
-  const auto r = test::run_phellem(std::string("render ") + PHELLEM_SOURCE_DIR + "/tests/scenes/spheres_env.json --spp 2 -o " + dir +
-                                   "/o.exr --png " + dir + "/o.png");
+  const auto r = test::run_phellem(std::string("render ") + PHELLEM_SOURCE_DIR + "/tests/scenes/spheres_env.json --spp 2 -o " +
+                                   dir + "/o.exr --png " + dir + "/o.png");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   auto in = OIIO::ImageInput::open(dir + "/o.exr");
   ASSERT_TRUE(in);
   const OIIO::ImageSpec& spec = in->spec();
   // OpenEXR stores channels sorted by name; compare as sets and look channels up by name.
-  auto sorted = [](std::vector<std::string> v) { std::sort(v.begin(), v.end()); return v; };
+  auto sorted = [](std::vector<std::string> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
   EXPECT_EQ(sorted(spec.channelnames), sorted(exr_channel_names()));
   auto ch = [&](const char* name) { return spec.channelindex(name); };
   EXPECT_EQ(spec.width, 64);
@@ -70,8 +73,9 @@ TEST(Output, DisplayViewsMapMidGreyAndClipHighlights) {
 
 TEST(Output, TurntableWritesEveryFrameAndOrbits) {
   const std::string dir = test::temp_dir("turntable");
-  const auto r = test::run_phellem(std::string("turntable ") + PHELLEM_SOURCE_DIR + "/tests/scenes/displaced_trunk.json --frames 3 --spp 1 --res 24x32 -o " +
-                                   dir + "/f_%04d.exr --png");
+  const auto r =
+      test::run_phellem(std::string("turntable ") + PHELLEM_SOURCE_DIR +
+                        "/tests/scenes/displaced_trunk.json --frames 3 --spp 1 --res 24x32 -o " + dir + "/f_%04d.exr --png");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (int f = 0; f < 3; ++f) {
     char name[64];
@@ -123,7 +127,8 @@ TEST(Output, EnvironmentFileLightsAPlaneByItsIrradiance) {
   EXPECT_NEAR(sum / spec.image_pixels(), 0.5, 0.01);
   // A corrupt map is a user error naming the light.
   test::write_text(dir + "/bad.hdr", "#?RADIANCE\ngarbage");
-  test::write_text(dir + "/bad.json", R"({"lights": [{"type": "environment", "file": "bad.hdr"}], "render": {"resolution": [4, 4], "spp": 1}})");
+  test::write_text(dir + "/bad.json",
+                   R"({"lights": [{"type": "environment", "file": "bad.hdr"}], "render": {"resolution": [4, 4], "spp": 1}})");
   const auto b = test::run_phellem("render " + dir + "/bad.json -o " + dir + "/b.exr");
   EXPECT_EQ(b.exit_code, 2) << b.output;
   EXPECT_NE(b.output.find("/lights/0/file"), std::string::npos) << b.output;
@@ -132,8 +137,9 @@ TEST(Output, EnvironmentFileLightsAPlaneByItsIrradiance) {
 TEST(Output, Mp4WithoutFfmpegIsAClearError) {
   if (std::system("command -v ffmpeg >/dev/null 2>&1") == 0) GTEST_SKIP() << "ffmpeg is installed here";
   const std::string dir = test::temp_dir("mp4");
-  const auto r = test::run_phellem(std::string("turntable ") + PHELLEM_SOURCE_DIR + "/tests/scenes/displaced_trunk.json --frames 2 -o " + dir +
-                                   "/f_%04d.exr --mp4 " + dir + "/t.mp4");
+  const auto r =
+      test::run_phellem(std::string("turntable ") + PHELLEM_SOURCE_DIR + "/tests/scenes/displaced_trunk.json --frames 2 -o " +
+                        dir + "/f_%04d.exr --mp4 " + dir + "/t.mp4");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("ffmpeg is not installed"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/f_0000.exr"));  // refused before rendering

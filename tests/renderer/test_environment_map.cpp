@@ -28,7 +28,8 @@ TEST(EnvironmentMap, OnePixelWideMapIsAcceptedAndSeenAsItsColour) {
   const RenderResult r = test::render_json(R"({
     "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov_deg": 30},
     "render": {"resolution": [8, 8], "spp": 2, "seed": 1},
-    "lights": [{"type": "environment", "file": "sky.exr"}], "objects": []})", 1, dir);
+    "lights": [{"type": "environment", "file": "sky.exr"}], "objects": []})",
+                                           1, dir);
   const Film& f = r.film;
   for (size_t p = 0; p < size_t(f.width) * f.height; ++p) {
     EXPECT_NEAR(f.beauty[4 * p + 0], 0.25f, 1e-4f);
@@ -44,7 +45,8 @@ TEST(EnvironmentMap, AHeaderClaimingAHugeImageIsRefusedBeforeDecoding) {
     "lights": [{"type": "environment", "file": "sky.hdr"}], "objects": []})");
   const auto r = test::run_phellem("render " + dir + "/scene.json -o " + dir + "/out.exr");
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("phellem: error: " + dir + "/scene.json: /lights/0/file: cannot read environment map"), std::string::npos)
+  EXPECT_NE(r.output.find("phellem: error: " + dir + "/scene.json: /lights/0/file: cannot read environment map"),
+            std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("pixels; at most"), std::string::npos) << r.output;
 }

@@ -13,9 +13,9 @@
 #include <fstream>
 #include <vector>
 
-#include "tests/support/render_helpers.h"
 #include "io/image_output.h"
 #include "scene/scene_parser.h"
+#include "tests/support/render_helpers.h"
 
 namespace phellem {
 namespace {
@@ -25,8 +25,8 @@ constexpr double kRegionTolerance = 0.20;  // mean over any 16×16 region
 constexpr int kBlock = 4, kRegion = 16;
 
 struct RegressionError {
-  double mean = 0;          // over all 4×4 blocks and channels
-  double worst_region = 0;  // the largest mean over one 16×16 region's blocks and channels
+  double mean = 0;               // over all 4×4 blocks and channels
+  double worst_region = 0;       // the largest mean over one 16×16 region's blocks and channels
   std::vector<float> per_block;  // RGBA per pixel: its block's error (for the error image)
 };
 
@@ -72,7 +72,8 @@ std::vector<float> read_beauty(const std::string& path, int* w, int* h) {
   const auto& spec = in->spec();
   std::vector<float> all(size_t(*w) * *h * spec.nchannels), px(size_t(*w) * *h * 4);
   in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data());
-  const int idx[4] = {spec.channelindex("beauty.R"), spec.channelindex("beauty.G"), spec.channelindex("beauty.B"), spec.channelindex("beauty.A")};
+  const int idx[4] = {spec.channelindex("beauty.R"), spec.channelindex("beauty.G"), spec.channelindex("beauty.B"),
+                      spec.channelindex("beauty.A")};
   for (int k : idx)
     if (k < 0) return {};
   for (size_t p = 0; p < size_t(*w) * *h; ++p)
@@ -96,8 +97,10 @@ TEST_P(ImageRegression, MatchesReference) {
   ASSERT_EQ(r.film.width, w);
   ASSERT_EQ(r.film.height, h);
   const RegressionError e = regression_error(r.film.beauty, ref, w, h);
-  std::printf("image regression %s: mean block relative error %.4f (tolerance %.2f), worst 16x16 region %.4f (tolerance %.2f), "
-              "%d spp vs reference\n", name.c_str(), e.mean, kTolerance, e.worst_region, kRegionTolerance, d.render.spp);
+  std::printf(
+      "image regression %s: mean block relative error %.4f (tolerance %.2f), worst 16x16 region %.4f (tolerance %.2f), "
+      "%d spp vs reference\n",
+      name.c_str(), e.mean, kTolerance, e.worst_region, kRegionTolerance, d.render.spp);
   if (e.mean >= kTolerance || e.worst_region >= kRegionTolerance) {
     Film diff(w, h);
     diff.beauty = e.per_block;
@@ -118,8 +121,8 @@ TEST(ImageRegressionMetric, AWrongTileCannotHideInTheMean) {
     for (int x = 128; x < 144; ++x)
       for (int c = 0; c < 3; ++c) test[(size_t(y) * w + x) * 4 + c] = 0.9f;
   const RegressionError e = regression_error(test, ref, w, h);
-  EXPECT_LT(e.mean, kTolerance);                     // the average alone would pass it
-  EXPECT_NEAR(e.worst_region, 0.4 / 0.55, 1e-5);     // |0.9 − 0.5| / (0.5 + 0.05)
+  EXPECT_LT(e.mean, kTolerance);                  // the average alone would pass it
+  EXPECT_NEAR(e.worst_region, 0.4 / 0.55, 1e-5);  // |0.9 − 0.5| / (0.5 + 0.05)
   EXPECT_GT(e.worst_region, kRegionTolerance);
   // And an identical image has no error anywhere.
   const RegressionError same = regression_error(ref, ref, w, h);
@@ -127,7 +130,8 @@ TEST(ImageRegressionMetric, AWrongTileCannotHideInTheMean) {
   EXPECT_EQ(same.worst_region, 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression, ::testing::Values("spheres_env", "box_area_light", "displaced_trunk", "strip_tree", "stress_trunk"));
+INSTANTIATE_TEST_SUITE_P(Scenes, ImageRegression,
+                         ::testing::Values("spheres_env", "box_area_light", "displaced_trunk", "strip_tree", "stress_trunk"));
 
 }  // namespace
 }  // namespace phellem

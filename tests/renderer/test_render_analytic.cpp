@@ -12,9 +12,11 @@ using test::render_json;
 std::string furnace_scene(const std::string& material, int spp = 64) {
   return R"({
     "camera": {"position": [0, 0, 3.2], "look_at": [0, 0, 0], "fov_deg": 45},
-    "render": {"resolution": [40, 40], "spp": )" + std::to_string(spp) + R"(, "max_depth": 64, "seed": 1},
+    "render": {"resolution": [40, 40], "spp": )" +
+         std::to_string(spp) + R"(, "max_depth": 64, "seed": 1},
     "lights": [{"type": "environment", "color": [1, 1, 1]}],
-    "materials": {"m": )" + material + R"(},
+    "materials": {"m": )" +
+         material + R"(},
     "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]
   })";
 }
@@ -55,7 +57,8 @@ std::string sun_plane_scene(const Vec3f& sun_dir, float angle_deg) {
     "lights": [{"type": "sun", "direction": [%f, %f, %f], "irradiance": 2.0, "angle_deg": %f}],
     "materials": {"m": {"type": "diffuse", "base_color": [0.5, 0.5, 0.5]}},
     "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "size": 100, "material": "m"}]
-  })", sun_dir.x(), sun_dir.y(), sun_dir.z(), angle_deg);
+  })",
+                sun_dir.x(), sun_dir.y(), sun_dir.z(), angle_deg);
   return buf;
 }
 

@@ -4,8 +4,8 @@
 
 #include <set>
 
-#include "util/hash.h"
 #include "renderer/sampler.h"
+#include "util/hash.h"
 
 namespace phellem {
 namespace {

@@ -1,10 +1,10 @@
 // Chi-square tests of every sampling routine against the pdf it claims (STYLE.md, 7).
 #include <gtest/gtest.h>
 
-#include "tests/support/chi2.h"
 #include "renderer/bsdf.h"
 #include "renderer/light.h"
 #include "renderer/sampling.h"
+#include "tests/support/chi2.h"
 
 namespace phellem {
 namespace {
@@ -60,17 +60,19 @@ TEST(Chi2, UniformConeSunDisk) {
 TEST(Chi2, UniformEnvironmentAboveATiltedNormal) {
   const UniformEnvironment env(Color(0.5f, 0.6f, 0.7f));
   const Vec3f n = Vec3f(0.4f, -0.3f, 0.8f).normalized();
-  auto r = chi2_sphere([&](const Vec2f& u) -> std::optional<Vec3f> {
-                         auto s = env.sample_at(Vec3f::Zero(), n, u);
-                         if (!s) return std::nullopt;
-                         return s->wi;
-                       },
-                       [&](const Vec3f& wi) { return env.pdf_at(wi, n); });
+  auto r = chi2_sphere(
+      [&](const Vec2f& u) -> std::optional<Vec3f> {
+        auto s = env.sample_at(Vec3f::Zero(), n, u);
+        if (!s) return std::nullopt;
+        return s->wi;
+      },
+      [&](const Vec3f& wi) { return env.pdf_at(wi, n); });
   EXPECT_GT(r.p_value, kAlpha) << r.summary();
   EXPECT_NEAR(r.pdf_integral, 1.0, 2e-3);
   // Without a normal (transmissive receivers) the whole sphere, uniformly.
-  auto r2 = chi2_sphere([&](const Vec2f& u) -> std::optional<Vec3f> { return env.sample_at(Vec3f::Zero(), Vec3f::Zero(), u)->wi; },
-                        [&](const Vec3f& wi) { return env.pdf_at(wi, Vec3f::Zero()); });
+  auto r2 =
+      chi2_sphere([&](const Vec2f& u) -> std::optional<Vec3f> { return env.sample_at(Vec3f::Zero(), Vec3f::Zero(), u)->wi; },
+                  [&](const Vec3f& wi) { return env.pdf_at(wi, Vec3f::Zero()); });
   EXPECT_GT(r2.p_value, kAlpha) << r2.summary();
 }
 
@@ -86,12 +88,13 @@ TEST(Chi2, EnvironmentMapImportanceSampling) {
       for (int c = 0; c < 3; ++c) rgb[(y * w + x) * 3 + c] = v * (c == 0 ? 1.0f : 0.8f);
     }
   const EnvironmentMap env(rgb, w, h, 1.0f, 30.0f);
-  auto r = chi2_sphere([&](const Vec2f& u) -> std::optional<Vec3f> {
-                         auto s = env.sample(Vec3f::Zero(), u);
-                         if (!s) return std::nullopt;
-                         return s->wi;
-                       },
-                       [&](const Vec3f& wi) { return env.pdf(wi); }, 2'000'000, 64, 128);
+  auto r = chi2_sphere(
+      [&](const Vec2f& u) -> std::optional<Vec3f> {
+        auto s = env.sample(Vec3f::Zero(), u);
+        if (!s) return std::nullopt;
+        return s->wi;
+      },
+      [&](const Vec3f& wi) { return env.pdf(wi); }, 2'000'000, 64, 128);
   EXPECT_GT(r.p_value, kAlpha) << r.summary();
   EXPECT_NEAR(r.pdf_integral, 1.0, 2e-2);
 }

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tests/support/render_helpers.h"
 #include "renderer/render_scene.h"
 #include "scene/scene_parser.h"
+#include "tests/support/render_helpers.h"
 
 using namespace phellem;
 
@@ -19,7 +19,8 @@ std::string trunk_scene(bool crack_aware) {
   return std::string(R"({
     "camera": {"position": [0, 0.3, 0.7], "look_at": [0, 0.3, 0], "fov_deg": 18},
     "render": {"resolution": [96, 96], "spp": 4, "max_depth": 2, "seed": 3,
-               "tessellation": {"crack_aware": )") + (crack_aware ? "true" : "false") + R"(}},
+               "tessellation": {"crack_aware": )") +
+         (crack_aware ? "true" : "false") + R"(}},
     "lights": [{"type": "environment", "color": [1, 1, 1]}],
     "materials": {"bark": {"type": "diffuse", "base_color": [0.5, 0.5, 0.5]}},
     "objects": [{"type": "mesh", "material": "bark",
@@ -74,6 +75,6 @@ TEST(StressBarkRender, CrackAwareDicingRefinesOnlyNearTheCracks) {
     return build_render_scene(d, d.camera, d.render.width, d.render.height)->stats().diced_triangles;
   };
   const long long aware = diced(true), uniform = diced(false);
-  EXPECT_GT(aware, 20000);            // the cracks were refined
-  EXPECT_LT(aware * 2, uniform);      // but not the rest of the trunk
+  EXPECT_GT(aware, 20000);        // the cracks were refined
+  EXPECT_LT(aware * 2, uniform);  // but not the rest of the trunk
 }

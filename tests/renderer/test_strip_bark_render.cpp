@@ -36,7 +36,8 @@ TEST(TreeStripBark, FracturesContinueIntoTheChildBranchAtTheSamePoint) {
   int into_child = 0, into_parent = 0;
   for (const JunctionCrossing& c : tree.crossings()) {
     // The new fracture starts where the tip was: within the strips' discretization.
-    EXPECT_LT((c.at_from - c.at_to).norm(), 3 * 0.01) << "crossing at step " << c.step << " " << c.from << "->" << c.to << " " << c.at_from.transpose() << " / " << c.at_to.transpose();
+    EXPECT_LT((c.at_from - c.at_to).norm(), 3 * 0.01) << "crossing at step " << c.step << " " << c.from << "->" << c.to << " "
+                                                      << c.at_from.transpose() << " / " << c.at_to.transpose();
     (c.to == 1 ? into_child : into_parent) += 1;
   }
   EXPECT_GT(into_child, 0);

@@ -40,8 +40,8 @@ double peak(const std::string& json, MemoryRequest req = {}) {
 }
 
 std::string strip_tree(const std::string& length, const std::string& bark) {
-  return R"({"objects": [{"type": "tree", "axis": [[0, 0, 0], [0, )" + length + R"(, 0]], "radius": 0.15, "bark": {"model": "strips")" + bark +
-         "}}]}";
+  return R"({"objects": [{"type": "tree", "axis": [[0, 0, 0], [0, )" + length +
+         R"(, 0]], "radius": 0.15, "bark": {"model": "strips")" + bark + "}}]}";
 }
 
 TEST(MemoryEstimate, GrowsWithTheKnobsItNames) {

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "util/errors.h"
 #include "scene/scene_parser.h"
 #include "tests/support/scene_errors.h"
 #include "tests/support/test_util.h"
+#include "util/errors.h"
 
 namespace phellem {
 namespace {
@@ -23,22 +23,29 @@ TEST(SceneErrors, UnknownKeyNamesItsPath) {
 }
 
 TEST(SceneErrors, WrongTypes) {
-  EXPECT_NE(error_of(R"({"render": {"spp": "many"}})").find("/render/spp: must be an integer in [1, 1048576], found string"), std::string::npos);
+  EXPECT_NE(error_of(R"({"render": {"spp": "many"}})").find("/render/spp: must be an integer in [1, 1048576], found string"),
+            std::string::npos);
   EXPECT_NE(error_of(R"({"camera": {"position": [1, 2]}})").find("/camera/position: expected 3 numbers"), std::string::npos);
   EXPECT_NE(error_of(R"({"objects": {}})").find("/objects: expected an array"), std::string::npos);
 }
 
 TEST(SceneErrors, NegativeAndNonFiniteNumbers) {
-  EXPECT_NE(error_of(R"({"objects": [{"type": "sphere", "radius": -1}]})").find("/objects/0/radius: must be > 0"), std::string::npos);
+  EXPECT_NE(error_of(R"({"objects": [{"type": "sphere", "radius": -1}]})").find("/objects/0/radius: must be > 0"),
+            std::string::npos);
   // JSON has no NaN; a literal that overflows a double is refused at its path with the range.
   EXPECT_NE(error_of(R"({"camera": {"fov_deg": 1e999}})").find("/camera/fov_deg: number out of range: 1e999"), std::string::npos);
-  EXPECT_NE(error_of(R"({"lights": [{"type": "sun", "direction": [0, 1, 0], "irradiance": -2}]})").find("/lights/0/irradiance: must be >= 0"), std::string::npos);
+  EXPECT_NE(error_of(R"({"lights": [{"type": "sun", "direction": [0, 1, 0], "irradiance": -2}]})")
+                .find("/lights/0/irradiance: must be >= 0"),
+            std::string::npos);
 }
 
 TEST(SceneErrors, MissingFilesAndNames) {
-  EXPECT_NE(error_of(R"({"objects": [{"type": "mesh", "file": "nope.glb"}]})").find("/objects/0/file: file not found"), std::string::npos);
-  EXPECT_NE(error_of(R"({"objects": [{"type": "sphere", "radius": 1, "material": "oak"}]})").find("no material named \"oak\""), std::string::npos);
-  EXPECT_NE(error_of(R"({"lights": [{"type": "environment", "file": "sky.exr"}]})").find("/lights/0/file: file not found"), std::string::npos);
+  EXPECT_NE(error_of(R"({"objects": [{"type": "mesh", "file": "nope.glb"}]})").find("/objects/0/file: file not found"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"objects": [{"type": "sphere", "radius": 1, "material": "oak"}]})").find("no material named \"oak\""),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"lights": [{"type": "environment", "file": "sky.exr"}]})").find("/lights/0/file: file not found"),
+            std::string::npos);
 }
 
 TEST(SceneErrors, SyntaxErrorsGiveLineAndColumn) {
@@ -48,10 +55,14 @@ TEST(SceneErrors, SyntaxErrorsGiveLineAndColumn) {
 
 TEST(SceneErrors, ValidRangesAreChecked) {
   EXPECT_NE(error_of(R"({"render": {"resolution": [0, 10]}})").find("/render/resolution"), std::string::npos);
-  EXPECT_NE(error_of(R"({"lights": [{"type": "sky", "turbidity": 30, "sun_direction": [0,1,0]}]})").find("turbidity must lie in [1.7, 10]"), std::string::npos);
+  EXPECT_NE(error_of(R"({"lights": [{"type": "sky", "turbidity": 30, "sun_direction": [0,1,0]}]})")
+                .find("turbidity must lie in [1.7, 10]"),
+            std::string::npos);
   EXPECT_NE(error_of(R"({"lights": [{"type": "sky"}]})").find("needs a sun_direction or a sun light"), std::string::npos);
-  EXPECT_NE(error_of(R"({"materials": {"m": {"type": "diffuse", "base_color": [2, 0, 0]}}})").find("must lie in [0, 1]"), std::string::npos);
-  EXPECT_NE(error_of(R"({"camera": {"position": [0,0,0], "look_at": [0,0,0]}})").find("must differ from position"), std::string::npos);
+  EXPECT_NE(error_of(R"({"materials": {"m": {"type": "diffuse", "base_color": [2, 0, 0]}}})").find("must lie in [0, 1]"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"camera": {"position": [0,0,0], "look_at": [0,0,0]}})").find("must differ from position"),
+            std::string::npos);
 }
 
 TEST(SceneErrors, DefaultSceneParses) {
@@ -90,7 +101,8 @@ TEST(Cli, TreeTooLargeForItsStripBarkExitsTwoAtOnce) {
                                           "bark": {"model": "strips", "preset": "furrowed"}}]})");
   const auto r = test::run_phellem("simulate " + dir + "/huge.json -o " + dir + "/out --quiet");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("huge.json: /objects/0/bark/element_length: element_length: must be at least"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("huge.json: /objects/0/bark/element_length: element_length: must be at least"), std::string::npos)
+      << r.output;
 }
 
 TEST(Cli, FilmLargerThanMemoryIsRefusedBeforeRendering) {
@@ -100,28 +112,34 @@ TEST(Cli, FilmLargerThanMemoryIsRefusedBeforeRendering) {
   if (0.75 * physical > 32768.0 * 32768.0 * 140.0) GTEST_SKIP() << "this machine has the memory for the film";
   const auto r = test::run_phellem("render --res 32768x32768 --spp 1 -o /tmp/phellem_never.exr --quiet");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("phellem: error: <command line>: --res: needs about 140.0 GiB for the 32768x32768 film"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("phellem: error: <command line>: --res: needs about 140.0 GiB for the 32768x32768 film"),
+            std::string::npos)
+      << r.output;
   const std::string dir = test::temp_dir("cli_big_film");
   test::write_text(dir + "/big.json", R"({"render": {"resolution": [32768, 32768], "spp": 1}})");
   const auto s = test::run_phellem("render " + dir + "/big.json -o " + dir + "/out.exr --quiet");
   EXPECT_EQ(s.exit_code, 2);
-  EXPECT_NE(s.output.find(dir + "/big.json: /render/resolution: needs about 140.0 GiB for the 32768x32768 film"), std::string::npos) << s.output;
+  EXPECT_NE(s.output.find(dir + "/big.json: /render/resolution: needs about 140.0 GiB for the 32768x32768 film"),
+            std::string::npos)
+      << s.output;
 }
 
 TEST(Errors, PrintableEscapesWhatATerminalCannotShow) {
-  EXPECT_EQ(printable("θ × ≤ 1\tok\n"), "θ × ≤ 1\tok\n");  // valid UTF-8, tab and newline pass
-  EXPECT_EQ(printable("key\xEF'"), "key\\xEF'");              // a lone lead byte
-  EXPECT_EQ(printable("\x1B[31mred"), "\\x1B[31mred");         // a terminal escape
-  EXPECT_EQ(printable("\xC0\xAF"), "\\xC0\\xAF");            // an overlong '/'
-  EXPECT_EQ(printable("\xED\xA0\x80"), "\\xED\\xA0\\x80");  // a UTF-16 surrogate
-  EXPECT_EQ(printable("end\xE2\x88"), "end\\xE2\\x88");        // a sequence cut short
+  EXPECT_EQ(printable("θ × ≤ 1\tok\n"), "θ × ≤ 1\tok\n");        // valid UTF-8, tab and newline pass
+  EXPECT_EQ(printable("key\xEF'"), "key\\xEF'");                 // a lone lead byte
+  EXPECT_EQ(printable("\x1B[31mred"), "\\x1B[31mred");           // a terminal escape
+  EXPECT_EQ(printable("\xC0\xAF"), "\\xC0\\xAF");                // an overlong '/'
+  EXPECT_EQ(printable("\xED\xA0\x80"), "\\xED\\xA0\\x80");       // a UTF-16 surrogate
+  EXPECT_EQ(printable("end\xE2\x88"), "end\\xE2\\x88");          // a sequence cut short
   EXPECT_EQ(printable("\xF0\x9F\x8C\xB3"), "\xF0\x9F\x8C\xB3");  // U+1F333 passes
 }
 
 TEST(Cli, ErrorQuotingABrokenFileIsPrintable) {
   // A glTF whose JSON holds a byte that is not UTF-8: the parser's message quotes it.
   const std::string dir = test::temp_dir("cli_bad_bytes");
-  test::write_text(dir + "/m.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"buf\xEF" "fers\": []}");
+  test::write_text(dir + "/m.gltf",
+                   "{\"asset\": {\"version\": \"2.0\"}, \"buf\xEF"
+                   "fers\": []}");
   test::write_text(dir + "/s.json", R"({"objects": [{"type": "mesh", "file": "m.gltf"}]})");
   const auto r = test::run_phellem("render " + dir + "/s.json -o " + dir + "/o.exr --quiet");
   EXPECT_EQ(r.exit_code, 2);
@@ -143,10 +161,15 @@ TEST(Cli, BadOptionsExitTwo) {
   // A wrong output name is refused before the render, not after it.
   const auto png = test::run_phellem("render -o /tmp/phellem_never.png");
   EXPECT_EQ(png.exit_code, 2);
-  EXPECT_NE(png.output.find("phellem: error: <command line>: -o: expected a .exr file name, got \"/tmp/phellem_never.png\""), std::string::npos) << png.output;
+  EXPECT_NE(png.output.find("phellem: error: <command line>: -o: expected a .exr file name, got \"/tmp/phellem_never.png\""),
+            std::string::npos)
+      << png.output;
   EXPECT_NE(test::run_phellem("render --png /tmp/phellem_never.exr").output.find("expected a .png file name"), std::string::npos);
   EXPECT_EQ(test::run_phellem("turntable " PHELLEM_SOURCE_DIR "/scenes/default.json --frames 2 -o /tmp/f_%04d.tif").exit_code, 2);
-  EXPECT_EQ(test::run_phellem("turntable " PHELLEM_SOURCE_DIR "/scenes/default.json --frames 2 -o /tmp/f_%04d.exr --mp4 /tmp/t.gif").exit_code, 2);
+  EXPECT_EQ(
+      test::run_phellem("turntable " PHELLEM_SOURCE_DIR "/scenes/default.json --frames 2 -o /tmp/f_%04d.exr --mp4 /tmp/t.gif")
+          .exit_code,
+      2);
 }
 
 }  // namespace

@@ -19,14 +19,17 @@ const char* kRange = "[0, 18446744073709551615]";
 
 std::string strips_tree(const std::string& seed) {
   return R"({"objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 2, 0]], "radius": [0.2],
-             "bark": {"model": "strips", "seed": )" + seed + "}}]}";
+             "bark": {"model": "strips", "seed": )" +
+         seed + "}}]}";
 }
 std::string stress_mesh(const std::string& seed) {
-  return R"({"objects": [{"type": "mesh", "procedural": {"shape": "sheet"}, "bark": {"model": "stress", "seed": )" + seed + "}}]}";
+  return R"({"objects": [{"type": "mesh", "procedural": {"shape": "sheet"}, "bark": {"model": "stress", "seed": )" + seed +
+         "}}]}";
 }
 std::string render_seed(const std::string& seed) { return R"({"render": {"seed": )" + seed + "}}"; }
 std::string displacement(const std::string& seed) {
-  return R"({"objects": [{"type": "mesh", "procedural": {"shape": "trunk"}, "displacement": {"type": "noise", "seed": )" + seed + "}}]}";
+  return R"({"objects": [{"type": "mesh", "procedural": {"shape": "trunk"}, "displacement": {"type": "noise", "seed": )" + seed +
+         "}}]}";
 }
 std::string procedural(const std::string& seed) {
   return R"({"objects": [{"type": "mesh", "procedural": {"shape": "trunk", "seed": )" + seed + "}}]}";
@@ -51,13 +54,16 @@ TEST(Seeds, EverySeedTakesTheWholeRange) {
   EXPECT_EQ(uint64_t(parse(displacement("18446744073709551615")).objects[0].displacement.seed), top);
   EXPECT_EQ(uint64_t(parse(procedural("18446744073709551615")).objects[0].procedural->seed), top);
   // Bark without a seed of its own takes render.seed, all 64 bits of it.
-  const std::string tree = R"({"render": {"seed": 12345678901234567890}, "objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 2, 0]],
+  const std::string tree =
+      R"({"render": {"seed": 12345678901234567890}, "objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 2, 0]],
                               "radius": [0.2], "bark": {"model": "strips"}}]})";
   EXPECT_EQ(parse(tree).objects[0].tree.strip_bark->params.seed, 12345678901234567890u);
 }
 
 TEST(Seeds, FractionsNegativesAndTooLargeAreRefusedWithTheRange) {
-  struct Case { std::string json, path; };
+  struct Case {
+    std::string json, path;
+  };
   const std::vector<Case> cases = {
       {strips_tree("1.5"), "/objects/0/bark/seed"},
       {strips_tree("-1"), "/objects/0/bark/seed"},
@@ -82,7 +88,8 @@ TEST(Seeds, FractionsNegativesAndTooLargeAreRefusedWithTheRange) {
 
 TEST(Seeds, FoldSeedIsTheIdentityBelow2To32) {
   // What keeps every existing scene's output bit-identical: 32-bit consumers see the same seed.
-  for (uint64_t s : {0ull, 1ull, 7ull, 123456789ull, 2147483647ull, 2147483648ull, 4294967295ull}) EXPECT_EQ(fold_seed(s), uint32_t(s)) << s;
+  for (uint64_t s : {0ull, 1ull, 7ull, 123456789ull, 2147483647ull, 2147483648ull, 4294967295ull})
+    EXPECT_EQ(fold_seed(s), uint32_t(s)) << s;
   // Above, the high half counts: 2^32 + 5 is not 5, and seeds differing only there differ.
   EXPECT_NE(fold_seed(4294967296ull + 5), 5u);
   EXPECT_NE(fold_seed(4294967296ull + 5), fold_seed(2 * 4294967296ull + 5));

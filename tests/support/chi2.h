@@ -23,8 +23,8 @@ struct Chi2Result {
 // `sample(u)` returns a unit direction or nothing (a failed sample counts towards N);
 // `pdf(w)` the solid-angle density claimed for it.
 Chi2Result chi2_sphere(const std::function<std::optional<Vec3f>(const Vec2f&)>& sample,
-                       const std::function<float(const Vec3f&)>& pdf, int samples = 1'000'000,
-                       int theta_bins = 40, int phi_bins = 80, uint32_t seed = 1);
+                       const std::function<float(const Vec3f&)>& pdf, int samples = 1'000'000, int theta_bins = 40,
+                       int phi_bins = 80, uint32_t seed = 1);
 
 // Regularized upper incomplete gamma Q(a, x) (for chi-square p-values).
 double gamma_q(double a, double x);

@@ -32,8 +32,7 @@ double mean_beauty(const Film& f, int c, float alpha) {
     for (int x = 1; x + 1 < f.width; ++x) {
       bool ok = true;
       for (int dy = -1; dy <= 1 && ok; ++dy)
-        for (int dx = -1; dx <= 1 && ok; ++dx)
-          ok = f.beauty[(size_t(y + dy) * f.width + x + dx) * 4 + 3] == alpha;
+        for (int dx = -1; dx <= 1 && ok; ++dx) ok = f.beauty[(size_t(y + dy) * f.width + x + dx) * 4 + 3] == alpha;
       if (!ok) continue;
       sum += f.beauty[(size_t(y) * f.width + x) * 4 + c];
       ++n;

@@ -39,8 +39,8 @@ CommandResult run_phellem(const std::string& args) {
   return run_command(std::string(PHELLEM_BINARY) + " " + args + " --quiet 2>&1");
 }
 CommandResult run_phellem_limited(const std::string& args, int memory_mib, int seconds) {
-  return run_command("ulimit -v " + std::to_string(memory_mib * 1024) + " && exec timeout -k 5 " +
-                     std::to_string(seconds) + " " + PHELLEM_BINARY + " " + args + " --quiet 2>&1");
+  return run_command("ulimit -v " + std::to_string(memory_mib * 1024) + " && exec timeout -k 5 " + std::to_string(seconds) + " " +
+                     PHELLEM_BINARY + " " + args + " --quiet 2>&1");
 }
 std::string temp_dir(const std::string& name) {
   auto d = std::filesystem::temp_directory_path() / ("phellem_test_" + name + "_" + std::to_string(getpid()));
@@ -57,9 +57,9 @@ std::string read_text(const std::string& path) {
 std::vector<std::string> leftover_temporaries(const std::string& dir) {
   std::vector<std::string> found;
   std::error_code ec;
-  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec); !ec && it != std::filesystem::recursive_directory_iterator();
-       it.increment(ec))
+  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
     if (it->path().filename().string().find(".tmp") != std::string::npos) found.push_back(it->path().string());
   return found;
 }
-}
+}  // namespace phellem::test

@@ -2,7 +2,10 @@
 #include <string>
 #include <vector>
 namespace phellem::test {
-struct CommandResult { int exit_code; std::string output; };
+struct CommandResult {
+  int exit_code;
+  std::string output;
+};
 // Runs the phellem binary with `args` (shell-quoted by the caller), capturing stderr+stdout.
 CommandResult run_phellem(const std::string& args);
 // The same with the address space limited to `memory_mib` MiB and the run to `seconds`
@@ -15,4 +18,4 @@ void write_text(const std::string& path, const std::string& text);
 std::string read_text(const std::string& path);
 // Files anywhere under `dir` whose name holds ".tmp": temporaries a run left behind.
 std::vector<std::string> leftover_temporaries(const std::string& dir);
-}
+}  // namespace phellem::test

@@ -48,7 +48,8 @@ TEST(OutputSet, TwoOutputsNamingOneFileAreRefused) {
   OutputSet out;
   out.expect_file("-o", d + "/a.exr");
   EXPECT_EQ(error_of([&] { out.expect_file("--stats", d + "/a.exr"); }), d + "/a.exr: --stats: the same file as -o");
-  EXPECT_EQ(error_of([&] { out.expect_file("--stats", d + "/sub/../a.exr"); }), d + "/sub/../a.exr: --stats: the same file as -o");
+  EXPECT_EQ(error_of([&] { out.expect_file("--stats", d + "/sub/../a.exr"); }),
+            d + "/sub/../a.exr: --stats: the same file as -o");
   out.expect_file("--png", d + "/sub/a.png");
   EXPECT_EQ(error_of([&] { out.expect_file("--stats", d + "/link/a.png"); }), d + "/link/a.png: --stats: the same file as --png");
   EXPECT_EQ(error_of([&] { out.expect_file("-o", d + "/./a.exr"); }), d + "/./a.exr: -o: named twice by -o");

@@ -61,9 +61,9 @@ TEST(BarkSurface, CrackedMeshDisplacesByTheVProfileAndDarkensWithDepth) {
   CrackLook look;
   look.min_width = 0.002f;
   look.width_per_edge = 0.0f;
-  look.max_width = 0.002f;   // half-width 2 mm
+  look.max_width = 0.002f;  // half-width 2 mm
   look.depth_per_width = 2.0f;
-  look.max_depth = 0.004f;   // depth 4 mm on the crack
+  look.max_depth = 0.004f;  // depth 4 mm on the crack
   look.noise = 0;
   look.darkening = 0.5f;
   const CrackedMesh c = cracked_square();
@@ -74,10 +74,10 @@ TEST(BarkSurface, CrackedMeshDisplacesByTheVProfileAndDarkensWithDepth) {
   off.position = Eigen::Vector3f(0.02f, 0, 0);
   const BarkDisplacement d_on = s->displace(on), d_half = s->displace(half), d_off = s->displace(off);
   EXPECT_NEAR(d_on.offset, -0.004f, 1e-6f);
-  EXPECT_NEAR(d_half.offset, -0.002f, 1e-5f);   // V-profile: linear in the distance
+  EXPECT_NEAR(d_half.offset, -0.002f, 1e-5f);  // V-profile: linear in the distance
   EXPECT_EQ(d_off.offset, 0.0f);
-  EXPECT_NEAR(d_on.attributes.x(), 1.0f, 1e-5f);   // normalized depth
-  EXPECT_EQ(d_on.attributes.y(), 1.0f);            // inside the crack
+  EXPECT_NEAR(d_on.attributes.x(), 1.0f, 1e-5f);  // normalized depth
+  EXPECT_EQ(d_on.attributes.y(), 1.0f);           // inside the crack
   EXPECT_EQ(d_off.attributes.y(), 0.0f);
   const BarkShade sh = s->shade(Eigen::Vector2f(0.5f, 1.0f));
   EXPECT_FALSE(sh.replaces_albedo);

@@ -15,12 +15,13 @@ TEST(CrackProfile, NeverDeeperThanAFractionOfTheLocalThickness) {
   auto slab = [](double thickness) {
     bark::CrackedMesh c;
     const double h = thickness;
-    c.mesh.positions = {{-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0}, {-0.05, 0.05, 0},
+    c.mesh.positions = {{-0.05, -0.05, 0},  {0.05, -0.05, 0},  {0.05, 0.05, 0},  {-0.05, 0.05, 0},
                         {-0.05, -0.05, -h}, {0.05, -0.05, -h}, {0.05, 0.05, -h}, {-0.05, 0.05, -h},
-                        {0.0, -0.05, 0}, {0.0, 0.05, 0}};  // 8, 9: the crack's ends on the top face
+                        {0.0, -0.05, 0},    {0.0, 0.05, 0}};         // 8, 9: the crack's ends on the top face
     c.mesh.triangles = {{0, 8, 9}, {0, 9, 3}, {8, 1, 2}, {8, 2, 9},  // top (+z), split along x = 0
-                        {4, 6, 5}, {4, 7, 6},                          // bottom
-                        {0, 4, 5}, {0, 5, 8}, {8, 5, 1}, {1, 5, 6}, {1, 6, 2}, {2, 6, 7}, {2, 7, 9}, {9, 7, 3}, {3, 7, 4}, {3, 4, 0}};
+                        {4, 6, 5}, {4, 7, 6},                        // bottom
+                        {0, 4, 5}, {0, 5, 8}, {8, 5, 1}, {1, 5, 6}, {1, 6, 2},
+                        {2, 6, 7}, {2, 7, 9}, {9, 7, 3}, {3, 7, 4}, {3, 4, 0}};
     c.crack_edges = {{8, 9}};
     c.crack_width.assign(c.mesh.positions.size(), 0.0f);
     c.crack_width[8] = c.crack_width[9] = 4;  // wide: half-width at the cap
@@ -37,7 +38,7 @@ TEST(CrackProfile, NeverDeeperThanAFractionOfTheLocalThickness) {
   look.noise = 0;
   const Vec3f on_crack(0.0f, 0.0f, 0.0f), up(0, 0, 1);
   const CrackProfile thin(slab(0.004), look, 1), thick(slab(0.1), look, 1);
-  EXPECT_NEAR(thick.at(on_crack, up).depth, 0.01f, 1e-6f);     // min(max_depth, 2 × 6 mm)
+  EXPECT_NEAR(thick.at(on_crack, up).depth, 0.01f, 1e-6f);  // min(max_depth, 2 × 6 mm)
   EXPECT_NEAR(thin.at(on_crack, up).depth, 0.45f * 0.004f, 2e-5f);
   // Away from the crack, nothing; half-way across its width, half the depth (V-profile).
   EXPECT_EQ(thick.at(Vec3f(0.02f, 0, 0), up).depth, 0.0f);
@@ -61,12 +62,12 @@ TEST(CrackProfile, MeshFarLargerThanItsCracksAnswersAtOnce) {
   const auto start = std::chrono::steady_clock::now();
   const CrackProfile profile(c, look, 1);
   const Vec3f up(0, 0, 1);
-  EXPECT_GT(profile.at(Vec3f(0, 1000, 0), up).depth, 0.0f);  // on the crack, far along it
-  EXPECT_EQ(profile.at(Vec3f(0.05f, 1000, 0), up).depth, 0.0f);  // 5 cm beside it
-  EXPECT_TRUE(profile.reaches(Vec3f(-5e4f, 0, 0), Vec3f(5e4f, 0, 0)));      // an edge across it
+  EXPECT_GT(profile.at(Vec3f(0, 1000, 0), up).depth, 0.0f);                    // on the crack, far along it
+  EXPECT_EQ(profile.at(Vec3f(0.05f, 1000, 0), up).depth, 0.0f);                // 5 cm beside it
+  EXPECT_TRUE(profile.reaches(Vec3f(-5e4f, 0, 0), Vec3f(5e4f, 0, 0)));         // an edge across it
   EXPECT_FALSE(profile.reaches(Vec3f(2e4f, -5e4f, 0), Vec3f(2e4f, 5e4f, 0)));  // a long one 20 km beside it
-  EXPECT_FALSE(profile.reaches(Vec3f(1e3f, 0, 0), Vec3f(1e3f, 0.01f, 0)));    // a short one 1 km beside it
-  EXPECT_TRUE(profile.reaches(Vec3f(0.001f, 0, 0), Vec3f(0.002f, 0, 0)));  // a short one on it
+  EXPECT_FALSE(profile.reaches(Vec3f(1e3f, 0, 0), Vec3f(1e3f, 0.01f, 0)));     // a short one 1 km beside it
+  EXPECT_TRUE(profile.reaches(Vec3f(0.001f, 0, 0), Vec3f(0.002f, 0, 0)));      // a short one on it
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 

@@ -93,7 +93,9 @@ void expect_covering_and_agreeing(const FractureField& f, const FractureMesh& m,
     for (int y = std::max(0, y0); y < std::min(f.height, y1 + 1); ++y)
       for (int x = std::max(0, x0); x < std::min(f.width, x1 + 1); ++x) {
         const Eigen::Vector2d p(x + 0.5, y + 0.5);
-        auto edge = [&](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return (v - u).x() * (p - u).y() - (v - u).y() * (p - u).x(); };
+        auto edge = [&](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
+          return (v - u).x() * (p - u).y() - (v - u).y() * (p - u).x();
+        };
         if (edge(a, b) >= 0 && edge(b, c) >= 0 && edge(c, a) >= 0) owner[f.index(x, y)] = int(ti);
       }
   }

@@ -5,12 +5,12 @@
 #include <map>
 
 #include "bark/geometry/generalized_cylinder.h"
-#include "tests/support/render_helpers.h"
-#include "scene/displacement.h"
-#include "renderer/render_scene.h"
-#include "scene/scene_parser.h"
 #include "bark/geometry/tessellation.h"
+#include "renderer/render_scene.h"
+#include "scene/displacement.h"
+#include "scene/scene_parser.h"
 #include "scene/tree_surface.h"
+#include "tests/support/render_helpers.h"
 
 namespace phellem {
 namespace {
@@ -35,11 +35,11 @@ std::map<std::pair<int, int>, int> edge_use(const MeshData& m) {
 MeshData icosphere(int subdivisions) {
   MeshData m;
   const float t = (1 + std::sqrt(5.0f)) / 2;
-  m.positions = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
-                 {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  m.positions = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                 {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for (auto& p : m.positions) p.normalize();
-  m.indices = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
-               3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+  m.indices = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,  11, 10, 2,  10, 7, 6, 7, 1, 8,
+               3, 9,  4, 3, 4, 2, 3, 2, 6, 3, 6, 8,  3, 8,  9,  4, 9, 5, 2, 4,  11, 6,  2,  10, 8,  6, 7, 9, 8, 1};
   for (int s = 0; s < subdivisions; ++s) {
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
     auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -160,7 +160,8 @@ TEST(Tessellation, DicingCameraFixesTheGeometryAndBudgetBoundsIt) {
 TEST(Tessellation, ObjectSpaceDicingHitsTheTargetEdgeLength) {
   const SceneDesc d = parse_scene(R"({
     "render": {"tessellation": {"mode": "object", "edge_length": 0.01}},
-    "objects": [{"type": "tree", "axis": [[0,0,0],[0,1,0]], "radius": 0.1}]})", "<t>", ".");
+    "objects": [{"type": "tree", "axis": [[0,0,0],[0,1,0]], "radius": 0.1}]})",
+                                  "<t>", ".");
   const auto rs = build_render_scene(d, d.camera, 64, 48);
   // A 1 m tube of circumference 0.628 m diced to ≤1 cm edges: ≥ 63 × 100 quads.
   EXPECT_GE(rs->stats().diced_triangles, 2 * 63 * 100);
@@ -206,7 +207,8 @@ TEST(Tessellation, DicedCoarseMeshShadesWithTheBaseNormalsAndTheDisplacementSlop
   // Displacement a·sin(k y) along the normal: the surface r(y) = r₀ + a sin(k y) has the normal
   // (1, −a k cos(k y)) / √(1 + (a k cos(k y))²) in the (radial, y) plane.
   const float amp = 0.01f, freq = 6.0f;
-  const MeshData bumped = dice(base, DisplacementFn([&](const Vec2f&, const Vec3f& p) { return amp * std::sin(freq * p.y()); }), d);
+  const MeshData bumped =
+      dice(base, DisplacementFn([&](const Vec2f&, const Vec3f& p) { return amp * std::sin(freq * p.y()); }), d);
   int checked = 0;
   for (size_t k = 0; k < bumped.positions.size(); ++k) {
     const Vec3f& p = bumped.positions[k];

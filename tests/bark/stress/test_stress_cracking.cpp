@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
-#include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <cmath>
 
@@ -221,7 +221,7 @@ TEST(StressPatterns, GrowthPullsAroundATubeOfAnyOrientation) {
     return std::pair{worst, mean_tension / faces};
   };
   const auto [growth_off, growth_tension] = girth_alignment(StressPattern::Growth);
-  EXPECT_LT(growth_off, 0.05 * 2.0);  // nothing along the axis, no shear
+  EXPECT_LT(growth_off, 0.05 * 2.0);      // nothing along the axis, no shear
   EXPECT_NEAR(growth_tension, 2.0, 0.1);  // the median face carries the magnitude
   // A one-channel stress image scales it like any pattern.
   StressImage half;
@@ -284,7 +284,8 @@ TEST(IrregularRemesh, WellShapedIrregularAndUVsFollowTheSurface) {
   edge /= double(m.mesh().number_of_edges());
   EXPECT_NEAR(edge, 0.04, 0.01);
   int slivers = 0;
-  for (const auto& t : r.triangles) slivers += min_angle(r.positions[t[0]], r.positions[t[1]], r.positions[t[2]]) < 15 * kPi / 180;
+  for (const auto& t : r.triangles)
+    slivers += min_angle(r.positions[t[0]], r.positions[t[1]], r.positions[t[2]]) < 15 * kPi / 180;
   EXPECT_LT(slivers, int(r.triangles.size() / 50));
   for (size_t k = 0; k < r.positions.size(); ++k) {
     EXPECT_NEAR(r.uvs[k].x(), r.positions[k].x(), 1e-9);
@@ -313,7 +314,8 @@ TEST(IrregularRemesh, KeepsTheUVSeamOfACylinder) {
       const double theta = std::atan2(-r.positions[k].z(), r.positions[k].x());  // cylinder_mesh: u = θ / 2π
       const double u = theta < -1e-9 ? theta / (2 * kPi) + 1 : theta / (2 * kPi);
       // (u is linear along each facet's chord: within 2e-3 of θ / 2π on this 24-sided prism.)
-      EXPECT_TRUE(std::abs(r.uvs[k].x() - u) < 2e-3 || std::abs(r.uvs[k].x() - u - 1) < 2e-3 || std::abs(r.uvs[k].x() - u + 1) < 2e-3)
+      EXPECT_TRUE(std::abs(r.uvs[k].x() - u) < 2e-3 || std::abs(r.uvs[k].x() - u - 1) < 2e-3 ||
+                  std::abs(r.uvs[k].x() - u + 1) < 2e-3)
           << r.uvs[k].x() << " vs " << u;
       seam_low += r.uvs[k].x() < 1e-9;
       seam_high += r.uvs[k].x() > 1 - 1e-9;

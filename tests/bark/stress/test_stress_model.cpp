@@ -3,8 +3,8 @@
 // tensor (eq. 4), relaxation (eqs. 7–9), Algorithm 1 — and the parameter checks.
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <cmath>
 
@@ -44,7 +44,9 @@ TEST(StressForces, RightTriangleMatchesEquationOne) {
   const auto vs = m.vertices(f);
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector3d p = m.point(vs[size_t(k)]);
-    const Eigen::Vector3d grad = p.x() == 1 ? Eigen::Vector3d(1, 0, 0) : p.y() == 1 ? Eigen::Vector3d(0, 1, 0) : Eigen::Vector3d(-1, -1, 0);
+    const Eigen::Vector3d grad = p.x() == 1   ? Eigen::Vector3d(1, 0, 0)
+                                 : p.y() == 1 ? Eigen::Vector3d(0, 1, 0)
+                                              : Eigen::Vector3d(-1, -1, 0);
     const Eigen::Vector3d expect = -0.5 * w * grad;
     EXPECT_LT((forces[size_t(k)] - expect).norm(), 1e-14) << "vertex " << k;
   }
@@ -133,7 +135,11 @@ TEST(SeparationTensor, RegularFanUnderUniformTension) {
   // Compression instead: no tensile separation at all.
   for (FaceId f : m.mesh().faces()) m.face(f).sigma = -s * Eigen::Matrix2d::Identity();
   compute_forces(m, StressTopology::build(m), ff);
-  EXPECT_LE(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(separation_tensor(StressTopology::build(m), ff, uint32_t(centre.idx()))).eigenvalues().maxCoeff(), 1e-12);
+  EXPECT_LE(
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(separation_tensor(StressTopology::build(m), ff, uint32_t(centre.idx())))
+          .eigenvalues()
+          .maxCoeff(),
+      1e-12);
 }
 
 TEST(SeparationTensor, SymmetricForRandomStress) {

@@ -116,7 +116,8 @@ TEST(StripModel, InglisCountsStayExactOnMatureBark) {
     for (const Strip& s : m.strips())
       for (const Element& e : s.elements)
         if (e.kind == ElementKind::Fracture) count[m.skeleton().find(s.fractures[size_t(e.fracture)].id)] += 1;
-    for (const auto& [root, n] : count) ASSERT_EQ(m.inglis_measure(root).first, n) << "fracture " << root << " after step " << step;
+    for (const auto& [root, n] : count)
+      ASSERT_EQ(m.inglis_measure(root).first, n) << "fracture " << root << " after step " << step;
     checked += count.size();
   }
   EXPECT_GT(checked, 10000u);

@@ -235,13 +235,15 @@ TEST(StripModel, EveryPresetKeepsTheModelInvariantsOnABentCone) {
         }
       }
       if (step < p.steps) {  // (the last step also settles: hardening is not counted until the next measure)
-        for (const auto& [root, n] : count) ASSERT_EQ(m.inglis_measure(root).first, n) << name << " fracture " << root << " step " << step;
+        for (const auto& [root, n] : count)
+          ASSERT_EQ(m.inglis_measure(root).first, n) << name << " fracture " << root << " step " << step;
       }
     }
     EXPECT_GT(m.stats().propagated, 1000) << name;
     EXPECT_EQ(m.stats().scripted, 1) << name;
     EXPECT_LT(m.max_residual(), 1e-9) << name;
-    for (size_t j = 0; j < before.size(); ++j) EXPECT_NEAR(m.strips()[j].original_epidermis(), before[j], 1e-12 * before[j]) << name;
+    for (size_t j = 0; j < before.size(); ++j)
+      EXPECT_NEAR(m.strips()[j].original_epidermis(), before[j], 1e-12 * before[j]) << name;
   }
 }
 
