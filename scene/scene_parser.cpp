@@ -52,8 +52,8 @@ CameraDesc parse_camera(JsonObject o) {
 
 FilterDesc parse_filter(const JsonValue& v) {
   FilterDesc f;
-  if (v.is_string()) {
-    const std::string t = v.string();
+  // A filter's type and its default radius; false for an unknown name.
+  auto set_type = [&f](const std::string& t) {
     if (t == "blackman-harris")
       f.type = FilterType::BlackmanHarris;
     else if (t == "gaussian")
@@ -62,20 +62,18 @@ FilterDesc parse_filter(const JsonValue& v) {
       f.type = FilterType::Box;
       f.radius = 0.5f;
     } else
-      v.fail("unknown filter \"" + t + "\"; allowed: blackman-harris, gaussian, box");
+      return false;
+    return true;
+  };
+  const std::string allowed = "; allowed: blackman-harris, gaussian, box";
+  if (v.is_string()) {
+    const std::string t = v.string();
+    if (!set_type(t)) v.fail("unknown filter \"" + t + "\"" + allowed);
     return f;
   }
   JsonObject o = v.object();
   const std::string t = o.string("type", "blackman-harris");
-  if (t == "blackman-harris")
-    f.type = FilterType::BlackmanHarris;
-  else if (t == "gaussian")
-    f.type = FilterType::Gaussian;
-  else if (t == "box") {
-    f.type = FilterType::Box;
-    f.radius = 0.5f;
-  } else
-    o.fail("type", "unknown filter \"" + t + "\"; allowed: blackman-harris, gaussian, box");
+  if (!set_type(t)) o.fail("type", "unknown filter \"" + t + "\"" + allowed);
   if (auto r = o.get("radius")) {
     f.radius = r->positive();
     if (f.radius > 8.0f) r->fail("filter radius must be <= 8 pixels");

@@ -13,6 +13,8 @@ CommandResult run_phellem(const std::string& args);
 // without end or wait for ever.
 CommandResult run_phellem_limited(const std::string& args, int memory_mib, int seconds);
 std::string temp_dir(const std::string& name);
+// Standard base64 (RFC 4648, padded), for data: URIs in test glTF files.
+std::string base64(const std::vector<unsigned char>& in);
 void write_text(const std::string& path, const std::string& text);
 // The whole file as bytes ("" if it cannot be read).
 std::string read_text(const std::string& path);
