@@ -46,7 +46,11 @@ bark::StressStroke read_stroke(JsonObject o) {
     }
   }
   if (s.points.size() < 2) list.fail("a stroke needs at least 2 points");
-  if (auto v = o.get("magnitude")) s.magnitude = v->number();
+  if (auto v = o.get("magnitude")) {
+    s.magnitude = v->number();
+    if (!(s.magnitude >= 0 && s.magnitude <= 1e9))
+      v->fail("magnitude must be in [0, 1e9] (the stroke's stress magnitude; negative values have no meaning)");
+  }
   if (auto v = o.get("smoothing")) {
     s.smoothing = v->integer();
     if (s.smoothing < 0 || s.smoothing > 1000) v->fail("smoothing must be an integer in [0, 1000]");

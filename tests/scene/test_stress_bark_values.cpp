@@ -1,5 +1,5 @@
 // Stress bark values that cannot mean anything are refused at their JSON paths: a crack
-// whose minimum half-width exceeds its maximum, a negative stress magnitude.
+// whose minimum half-width exceeds its maximum, a negative stress magnitude (also a stroke's).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,6 +34,10 @@ TEST(StressBarkValues, NegativeMagnitudeIsRefused) {
   EXPECT_NE(msg.find("scene.json: /objects/0/bark/magnitude: "), std::string::npos) << msg;
   EXPECT_EQ(error_of(R"({"model": "stress", "magnitude": 0})"), "<no error>");
   EXPECT_EQ(error_of(R"({"model": "stress", "magnitude": 2.5})"), "<no error>");
+  // A stroke's magnitude too.
+  const auto stroke = error_of(R"({"model": "stress", "strokes": [{"uv": [[0.1, 0.1], [0.9, 0.9]], "magnitude": -2}]})");
+  EXPECT_NE(stroke.find("scene.json: /objects/0/bark/strokes/0/magnitude: "), std::string::npos) << stroke;
+  EXPECT_EQ(error_of(R"({"model": "stress", "strokes": [{"uv": [[0.1, 0.1], [0.9, 0.9]], "magnitude": 3}]})"), "<no error>");
 }
 
 }  // namespace
