@@ -179,7 +179,12 @@ FractureMesh mesh_fracture_field(const FractureField& f, double max_depth, const
     add(W, y);
   }
   CDT cdt;
-  cdt.insert_constraints(points.begin(), points.end(), segments.begin(), segments.end());
+  // CGAL's insert_constraints(points, indices) inserts no point when there is no constraint
+  // (bark without an open fracture or a depth level): then the points alone.
+  if (segments.empty())
+    cdt.insert(points.begin(), points.end());
+  else
+    cdt.insert_constraints(points.begin(), points.end(), segments.begin(), segments.end());
   int id = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     v->info() = id++;

@@ -139,3 +139,22 @@ TEST(FractureMesh, SimulatedFieldMeshesIntoSimplePolygonsAndAgreeingTriangles) {
   expect_covering_and_agreeing(f, m, 0.97);
 }
 #pragma GCC diagnostic pop
+
+// Bark with no open fracture (a young trunk: nothing reaches half opening) still meshes, all
+// epidermis. CGAL's insert_constraints(points, indices) inserts nothing when there are no
+// constraints: `simulate` wrote an empty .glb for a 100-step furrowed trunk.
+TEST(FractureMesh, BarkWithoutOpenFracturesMeshesAsWholeEpidermis) {
+  FractureField f = ellipses(64, 48);
+  for (float& o : f.opening) o *= 0.3f;  // at most 0.3 open: no contour at 0.5
+  for (float& d : f.depth) d *= 0.01f;   // and no depth level reached: no constraint at all
+  const FractureMesh m = mesh_fracture_field(f, 0.01);
+  EXPECT_TRUE(m.silhouettes.empty());
+  ASSERT_FALSE(m.triangles.empty());
+  double area = 0;
+  for (size_t t = 0; t < m.triangles.size(); ++t) {
+    const Eigen::Vector2d a = m.param[m.triangles[t][0]], b = m.param[m.triangles[t][1]], c = m.param[m.triangles[t][2]];
+    area += 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    EXPECT_EQ(m.fracture[t], 0);
+  }
+  EXPECT_NEAR(area, 64.0 * 48.0, 1e-6);
+}
