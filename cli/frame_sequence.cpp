@@ -1,8 +1,14 @@
 #include "cli/frame_sequence.h"
 
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <vector>
@@ -11,6 +17,7 @@
 #include "io/image_output.h"
 #include "util/atomic_file.h"
 #include "util/errors.h"
+#include "util/temp_files.h"
 
 namespace phellem {
 
@@ -29,7 +36,7 @@ void check_frame_outputs(const cli::Options& o) {
     }
   if (n != 1) throw UserError("", "-o", "the pattern needs exactly one frame field such as %04d");
   if (!o.mp4.empty() && std::system("command -v ffmpeg >/dev/null 2>&1") != 0)
-    throw UserError("", "--mp4", "ffmpeg is not installed (apt-get install ffmpeg), so no MP4 can be encoded");
+    throw UserError(o.mp4, "--mp4", "ffmpeg is not installed (apt-get install ffmpeg), so no MP4 can be encoded");
 }
 
 std::string frame_name(const std::string& pattern, int frame) {
@@ -59,9 +66,29 @@ void encode_mp4(const cli::Options& o, OutputSet& out) {
   // stem, so applied to the pattern it gives the pattern of their temporary names.
   const std::string png_pattern = temp_path_beside(png_frame_name(o.exr));
   const std::string tmp = out.stage("--mp4", o.mp4);
-  const std::string cmd = "ffmpeg -loglevel error -y -framerate 24 -i '" + png_pattern +
-                          "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 '" + tmp + "'";
-  if (std::system(cmd.c_str()) != 0) throw std::runtime_error("ffmpeg failed to encode " + o.mp4);
+  // No shell between us and ffmpeg: file names are passed as they are, whatever they hold.
+  std::vector<std::string> args = {"ffmpeg",     "-loglevel", "error",   "-nostdin",  "-y",
+                                   "-framerate", "24",        "-i",      png_pattern, "-c:v",
+                                   "libx264",    "-pix_fmt",  "yuv420p", "-vf",       "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                   "-f",         "mp4",       tmp};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (const int e = posix_spawnp(&pid, "ffmpeg", nullptr, nullptr, argv.data(), environ); e != 0)
+    throw UserError(o.mp4, "--mp4", std::string("cannot run ffmpeg: ") + std::strerror(e));
+  int status = 0;
+  {
+    const LiveChild child{int(pid)};  // a termination signal ends ffmpeg too
+    while (waitpid(pid, &status, 0) < 0)
+      if (errno != EINTR) throw UserError(o.mp4, "--mp4", std::string("lost ffmpeg: ") + std::strerror(errno));
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw UserError(o.mp4, "--mp4",
+                    "ffmpeg failed to encode the frames (" +
+                        (WIFEXITED(status) ? "exit code " + std::to_string(WEXITSTATUS(status))
+                                           : "signal " + std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0)) +
+                        "); the frames were not written either");
 }
 
 }  // namespace phellem

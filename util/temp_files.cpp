@@ -2,10 +2,12 @@
 
 #include <limits.h>
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -39,6 +41,7 @@ std::vector<Slot*> g_free;  // slots free for reuse (under g_claim)
 enum Phase : int { kRunning, kCommitting, kDying };
 std::atomic<int> g_phase{kRunning};
 std::atomic<int> g_deferred{0};  // a signal that arrived during a commit
+std::atomic<int> g_child{0};     // a child process to end first (LiveChild), or 0
 
 Slot* claim(const std::string& path, LiveTempFile::Kind kind) {
   std::lock_guard<std::mutex> lock(g_claim);
@@ -79,6 +82,11 @@ void remove_live(LiveTempFile::Kind kind) {
 }
 
 [[noreturn]] void die_by(int sig) {
+  if (const int child = g_child.exchange(0); child > 0) {  // kill and waitpid are async-signal-safe
+    kill(child, SIGKILL);
+    while (waitpid(child, nullptr, 0) < 0 && errno == EINTR) {
+    }
+  }
   remove_live(LiveTempFile::Kind::File);
   remove_live(LiveTempFile::Kind::Folder);  // after the files in them
   struct sigaction dfl {};
@@ -148,6 +156,13 @@ void remove_temp_files_on_termination() {
     sigaction(sig, &sa, nullptr);
   }
 }
+
+LiveChild::LiveChild(int pid) {
+  int none = 0;
+  if (!g_child.compare_exchange_strong(none, pid)) throw std::logic_error("LiveChild: one at a time");
+}
+
+LiveChild::~LiveChild() { g_child.store(0); }
 
 TerminationDeferral::TerminationDeferral() {
   int phase = kRunning;

@@ -26,6 +26,17 @@ class LiveTempFile {
   struct Slot* slot_ = nullptr;
 };
 
+// While one lives, a termination signal first kills process `pid` (a child writing one of the
+// run's temporaries, such as ffmpeg encoding the MP4) and waits for it, so it cannot write a
+// temporary after the handler removed it, nor outlive the run. One at a time.
+class LiveChild {
+ public:
+  explicit LiveChild(int pid);
+  ~LiveChild();
+  LiveChild(const LiveChild&) = delete;
+  LiveChild& operator=(const LiveChild&) = delete;
+};
+
 // Installs the handler for SIGTERM, SIGINT and SIGHUP (a signal the parent left ignored stays
 // ignored). It unlinks the live temporaries, then re-raises the signal with its default action,
 // so the exit status still tells which signal ended the process.
