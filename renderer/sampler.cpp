@@ -98,7 +98,7 @@ __attribute__((target_clones("avx2", "default"))) Vec4f Sampler::get4d() {
   // Owen-scramble each dimension independently:
   //   x_d = nested_uniform_scramble(sobol(nested_uniform_scramble(index, s)), s_d).
   // Both scrambles reverse, permute and reverse back; staying in the reversed domain between
-  // them leaves one reversal per dimension (tests/test_sampler.cpp checks the identity).
+  // them leaves one reversal per dimension (tests/renderer/test_sampler.cpp checks the identity).
   const uint32_t r = laine_karras_permutation(reversed_index_, set_seed);
   alignas(16) uint32_t x[4];
   for (int d = 0; d < 4; ++d) x[d] = sobol_reversed(r, d);

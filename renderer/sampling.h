@@ -1,5 +1,5 @@
 // Warps from [0,1)² to directions and tabulated distributions, each with its pdf.
-// Every routine here has a chi-square test in tests/test_sampling_chi2.cpp.
+// Every routine here has a chi-square test in tests/renderer/test_sampling_chi2.cpp.
 #pragma once
 
 #include <vector>

@@ -32,7 +32,7 @@ struct FilterDesc {
   float radius = 1.5f;  // pixels
 };
 
-// Dicing of displaced / parametric surfaces (see renderer/tessellation.h).
+// Dicing of displaced / parametric surfaces (see bark/geometry/tessellation.h).
 struct TessellationDesc {
   enum class Mode { Screen, Object } mode = Mode::Screen;
   float pixels_per_edge = 1.0f;             // screen mode: target micro-triangle edge in pixels

@@ -2,7 +2,7 @@
 // polynomials: inverse functions from Abramowitz & Stegun 1964 (|error| ≤ 2e-8 rad before
 // float rounding), sin/cos by quadrant reduction and Taylor series on [-π/4, π/4] (error
 // below float rounding). libm's correctly rounded versions cost several times more.
-// tests/test_fast_trig.cpp checks them against std:: over their whole domain.
+// tests/util/test_fast_trig.cpp checks them against std:: over their whole domain.
 #pragma once
 
 #include <cmath>
