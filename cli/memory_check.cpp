@@ -4,7 +4,7 @@
 
 #include "io/film.h"
 #include "renderer/film_memory.h"
-#include "scene/memory_estimate.h"
+#include "scene/memory_budget.h"
 #include "scene/scene_parser.h"
 
 namespace phellem {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "scene/memory_estimate.h"
+#include "scene/memory_budget.h"
 #include "util/errors.h"
 
 namespace phellem::cli {

@@ -4,14 +4,11 @@
 
 #include <cstdio>
 
+#include "util/memory.h"
+
 namespace phellem {
 
 namespace {
-
-double physical_memory_bytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
-}
 
 std::string gib(double bytes) {
   char s[32];
@@ -37,7 +34,7 @@ std::optional<std::string> image_size_problem(int64_t width, int64_t height, int
     return "the image is " + dims + " = " + std::to_string(uint64_t(pixels)) + " pixels; at most " +
            std::to_string(kMaxImagePixels) + " (2^28, e.g. 16384x16384) are read";
   const double bytes = pixels * double(channels) * 4.0;
-  if (physical_bytes <= 0) physical_bytes = physical_memory_bytes();
+  if (physical_bytes <= 0) physical_bytes = physical_memory();
   if (physical_bytes > 0 && bytes > kMaxImageMemoryFraction * physical_bytes)
     return "the image is " + dims + " with " + std::to_string(channels) + " channels: " + gib(bytes) +
            " as floats, more than a quarter of this machine's " + gib(physical_bytes) + " of memory";

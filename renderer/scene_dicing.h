@@ -7,14 +7,11 @@
 
 #include "bark/geometry/mesh_data.h"
 #include "renderer/scene_contents.h"
+#include "scene/dicing_params.h"
 #include "scene/scene_desc.h"
 #include "util/progress.h"
 
 namespace phellem {
-
-// The dicing rates of a scene for a camera of `height` pixels (the scene's own dicing camera
-// when it names one).
-DicingParams dicing_params(const TessellationDesc& tess, const CameraDesc& camera, int height);
 
 struct DicedMeshes {
   std::vector<MeshData> meshes;  // one per job, in order

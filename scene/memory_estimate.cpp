@@ -14,6 +14,7 @@
 #include "bark/geometry/irregular_remesh.h"
 #include "bark/strips/strip_domain.h"
 #include "bark/strips/strip_model.h"
+#include "scene/dicing_params.h"
 #include "scene/displacement.h"
 #include "scene/mesh_source.h"
 #include "scene/tree_surface.h"
@@ -301,19 +302,6 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
 
 // ---- Geometry -------------------------------------------------------------------------------
 
-// The renderer's dicing set-up (render_scene.cpp).
-DicingParams render_dicing(const SceneDesc& desc, int height) {
-  const TessellationDesc& tess = desc.render.tessellation;
-  const CameraDesc& dc = tess.dicing_camera ? *tess.dicing_camera : desc.camera;
-  DicingParams d;
-  d.screen_space = tess.mode == TessellationDesc::Mode::Screen;
-  d.target = d.screen_space ? tess.pixels_per_edge : tess.edge_length;
-  d.scale = tess.edge_length_scale;
-  d.camera_position = dc.position;
-  d.pixel_angle = 2.0f * std::tan(radians(dc.fov_deg) * 0.5f) / float(std::max(1, height));
-  return d;
-}
-
 // A displaced mesh's diced triangles: the estimate on a copy of at most 20000 triangles (the
 // dicing follows the target edge, not the input's), and at least one per input triangle.
 double displaced_mesh_triangles(const ObjectDesc& o, double triangles, const DicingParams& d) {
@@ -326,7 +314,7 @@ double displaced_mesh_triangles(const ObjectDesc& o, double triangles, const Dic
 
 MemoryItem geometry_item(const SceneDesc& desc, int height, const std::map<size_t, double>& stress_triangles) {
   const TessellationDesc& tess = desc.render.tessellation;
-  const DicingParams d = render_dicing(desc, height);
+  const DicingParams d = dicing_params(desc.render.tessellation, desc.camera, height);
   double diced = 0, stored = 0;
   std::map<std::string, double> files;  // instanced mesh files: stored once
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
@@ -493,126 +481,6 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
   last.items.push_back(req.film);
   e.moments.push_back(std::move(last));
   return e;
-}
-
-// ---- Budget ---------------------------------------------------------------------------------
-
-double physical_memory() {
-  double total = 0;
-  std::ifstream in("/proc/meminfo");
-  std::string key;
-  double value = 0;
-  std::string unit;
-  while (in >> key >> value) {
-    std::getline(in, unit);
-    if (key == "MemTotal:") {
-      total = value * 1024.0;
-      break;
-    }
-  }
-  if (!(total > 0)) total = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-  // A container's limit (cgroup v2, then v1) when it is smaller.
-  for (const char* f : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
-    std::ifstream c(f);
-    double limit = 0;
-    if (c >> limit && limit > 0 && limit < total) total = limit;
-  }
-  return total;
-}
-
-double parse_memory_size(const std::string& text) {
-  size_t used = 0;
-  double x = 0;
-  try {
-    x = std::stod(text, &used);
-  } catch (const std::exception&) {
-    throw std::invalid_argument(text);
-  }
-  std::string unit = text.substr(used);
-  for (char& c : unit) c = char(std::toupper(static_cast<unsigned char>(c)));
-  if (!(x > 0) || !std::isfinite(x)) throw std::invalid_argument(text);
-  if (unit == "%") {
-    if (x > 100) throw std::invalid_argument(text);
-    return x / 100 * physical_memory();
-  }
-  static const std::map<std::string, double> units = {{"", 1},
-                                                      {"B", 1},
-                                                      {"K", 1024.0},
-                                                      {"KB", 1024.0},
-                                                      {"KIB", 1024.0},
-                                                      {"M", 1048576.0},
-                                                      {"MB", 1048576.0},
-                                                      {"MIB", 1048576.0},
-                                                      {"G", 1073741824.0},
-                                                      {"GB", 1073741824.0},
-                                                      {"GIB", 1073741824.0},
-                                                      {"T", 1099511627776.0},
-                                                      {"TB", 1099511627776.0},
-                                                      {"TIB", 1099511627776.0}};
-  auto it = units.find(unit);
-  if (it == units.end()) throw std::invalid_argument(text);
-  return x * it->second;
-}
-
-MemoryBudget memory_budget(const std::string& option) {
-  const char* env = std::getenv("PHELLEM_MEMORY_LIMIT");
-  const bool from_option = !option.empty();
-  if (from_option || (env && *env)) {
-    const std::string text = from_option ? option : std::string(env);
-    try {
-      return {parse_memory_size(text), (from_option ? "--memory-limit " : "PHELLEM_MEMORY_LIMIT=") + text};
-    } catch (const std::invalid_argument&) {
-      const std::string what = "expected a memory size such as 6G, 512M, 1.5T or 50% (of physical memory), got \"" + text + "\"";
-      if (from_option) throw UserError("", "--memory-limit", what);
-      throw UserError("", "PHELLEM_MEMORY_LIMIT", what);
-    }
-  }
-  const double physical = physical_memory();
-  char source[160];
-  std::snprintf(source, sizeof source, "%.0f%% of this machine's %s; --memory-limit or PHELLEM_MEMORY_LIMIT sets another",
-                kDefaultMemoryShare * 100, format_bytes(physical).c_str());
-  return {kDefaultMemoryShare * physical, source};
-}
-
-std::string format_bytes(double bytes) {
-  char buf[64];
-  if (bytes >= 1073741824.0 * 0.95)
-    std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / 1073741824.0);
-  else
-    std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / 1048576.0);
-  return buf;
-}
-
-void check_memory(const MemoryEstimate& estimate, const MemoryBudget& budget) {
-  const MemoryMoment& peak = estimate.peak();
-  const double total = peak.bytes();
-  if (total <= budget.bytes) return;
-  const MemoryItem* largest = nullptr;
-  for (const auto& i : peak.items)
-    if (!i.where.empty() && (!largest || i.bytes > largest->bytes)) largest = &i;
-  const std::string allowed = ", more than the " + format_bytes(budget.bytes) + " allowed (" + budget.source + ")";
-  if (!largest) throw UserError("", "--memory-limit", "needs about " + format_bytes(total) + " while " + peak.stage + allowed);
-  std::string what = "needs about " + format_bytes(largest->bytes) + " for " + largest->what;
-  if (largest->bytes < 0.9 * total) what += " (" + format_bytes(total) + " in all while " + peak.stage + ")";
-  throw UserError(largest->file, largest->where, what + allowed + "; " + largest->advice);
-}
-
-std::string describe(const MemoryEstimate& estimate, const MemoryBudget& budget) {
-  std::ostringstream s;
-  for (const auto& m : estimate.moments) {
-    s << m.stage << ": " << format_bytes(m.bytes()) << "\n";
-    for (const auto& i : m.items) {
-      char line[32];
-      std::snprintf(line, sizeof line, "  %10s  ", format_bytes(i.bytes).c_str());
-      s << line << i.what;
-      if (!i.where.empty()) s << "  [" << i.where << "]";
-      s << "\n";
-    }
-  }
-  const MemoryMoment& peak = estimate.peak();
-  s << "peak: about " << format_bytes(peak.bytes()) << " while " << peak.stage << "; allowed: " << format_bytes(budget.bytes)
-    << " (" << budget.source << ")\n";
-  return s.str();
 }
 
 }  // namespace phellem

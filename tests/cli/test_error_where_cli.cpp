@@ -25,13 +25,7 @@ std::string error_line(const std::string& output) {
 
 // phellem without the --quiet that run_phellem appends (for a run with no arguments at all).
 test::CommandResult run_bare(const std::string& args) {
-  FILE* p = popen((std::string(PHELLEM_BINARY) + " " + args + " 2>&1").c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return test::run_command(std::string(PHELLEM_BINARY) + " " + args + " 2>&1");
 }
 
 struct Case {

@@ -49,16 +49,7 @@ TEST(ObjIndices, OutOfRangeIndicesAreErrorsNamingTheLine) {
     const std::string dir = test::temp_dir("obj_indices_" + std::to_string(&c - cases.data()));
     const std::string file = dir + "/m.obj";
     test::write_text(file, c.text);
-    try {
-      load_obj(file);
-      ADD_FAILURE() << c.name << ": accepted";
-    } catch (const UserError& e) {
-      EXPECT_EQ(e.file(), file) << c.name;
-      EXPECT_EQ(e.where(), c.where) << c.name << ": " << e.what();
-      EXPECT_NE(e.detail().find(c.expect), std::string::npos) << c.name << ": " << e.what();
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << c.name << ": not a UserError: " << e.what();
-    }
+    test::expect_user_error([&] { load_obj(file); }, c.name, file, c.where, c.expect);
   }
 }
 

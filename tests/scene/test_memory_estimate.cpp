@@ -4,9 +4,10 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "scene/memory_estimate.h"
+#include "scene/memory_budget.h"
 #include "scene/scene_parser.h"
 #include "util/errors.h"
+#include "util/memory.h"
 
 namespace phellem {
 namespace {

@@ -1,4 +1,6 @@
 #include "tests/support/test_util.h"
+
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <array>
 #include <cstdio>
@@ -7,6 +9,8 @@
 #include <fstream>
 #include <iterator>
 #include <vector>
+#include "util/errors.h"
+
 namespace phellem::test {
 namespace {
 // The temporary directories this test process made, removed when it exits (set
@@ -24,7 +28,6 @@ TempDirs& temp_dirs() {
   return dirs;
 }
 }  // namespace
-namespace {
 CommandResult run_command(const std::string& cmd) {
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
@@ -34,7 +37,20 @@ CommandResult run_command(const std::string& cmd) {
   const int status = pclose(p);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
-}  // namespace
+void expect_user_error(const std::function<void()>& load, const std::string& name, const std::string& file,
+                       const std::string& where, const std::string& detail) {
+  try {
+    load();
+    ADD_FAILURE() << name << ": accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(e.file(), file) << name;
+    EXPECT_EQ(e.where(), where) << name << ": " << e.what();
+    EXPECT_NE(e.detail().find(detail), std::string::npos) << name << ": " << e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << name << ": not a UserError: " << e.what();
+  }
+}
+
 CommandResult run_phellem(const std::string& args) {
   return run_command(std::string(PHELLEM_BINARY) + " " + args + " --quiet 2>&1");
 }

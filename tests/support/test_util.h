@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 namespace phellem::test {
@@ -8,6 +9,12 @@ struct CommandResult {
 };
 // Runs the phellem binary with `args` (shell-quoted by the caller), capturing stderr+stdout.
 CommandResult run_phellem(const std::string& args);
+// Calls `load`, which must throw a UserError naming `file` and `where` whose detail contains
+// `detail`; `name` labels the failures.
+void expect_user_error(const std::function<void()>& load, const std::string& name, const std::string& file,
+                       const std::string& where, const std::string& detail);
+// Runs a shell command line, capturing its standard output (add 2>&1 for stderr too).
+CommandResult run_command(const std::string& cmd);
 // The same with the address space limited to `memory_mib` MiB and the run to `seconds`
 // (exit code 124 when it timed out): for inputs that could make a broken build allocate
 // without end or wait for ever.
