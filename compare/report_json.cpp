@@ -24,6 +24,7 @@ nlohmann::json params_json() {
   const CompareParams& p = kCompareParams;
   return {{"highpass_sigma_cm", p.highpass_sigma_cm},
           {"smooth_sigma_cm", p.smooth_sigma_cm},
+          {"threshold_percentile", p.threshold_percentile},
           {"min_component_cm2", p.min_component_cm2},
           {"tensor_sigma_cm", p.tensor_sigma_cm},
           {"vertical_halfwidth_deg", p.vertical_halfwidth_deg},
