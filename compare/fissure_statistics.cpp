@@ -79,7 +79,7 @@ FissureAnalysis analyse_fissures(const HeightField& field, const AlbedoField* al
 
   // §3.3: orientation of the smoothed high-pass at the skeleton pixels, length-weighted.
   const std::vector<uint8_t> skeleton = zhang_suen_skeleton(fm.mask, W, H);
-  const StructureTensor J = structure_tensor(fm.hs, W, H, p.tensor_sigma_cm * s);
+  const StructureTensor J = structure_tensor(fm.hs, W, H, p.tensor_sigma_cm * s, p.blur_border);
   std::vector<double> angles;
   std::vector<size_t> skeleton_pixels;
   for (size_t i = 0; i < n; ++i)

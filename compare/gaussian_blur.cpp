@@ -17,7 +17,16 @@ std::vector<double> gaussian_kernel(double sigma_px) {
   return k;
 }
 
-std::vector<double> gaussian_blur(const std::vector<double>& in, int width, int height, double sigma_px) {
+int border_index(int i, int n, BlurBorder border) {
+  if (i >= 0 && i < n) return i;
+  if (border == BlurBorder::clamp) return i < 0 ? 0 : n - 1;
+  // Mirrored with the edge pixel repeated: period 2n, the second half reversed.
+  const int m = ((i % (2 * n)) + 2 * n) % (2 * n);
+  return m < n ? m : 2 * n - 1 - m;
+}
+
+std::vector<double> gaussian_blur(const std::vector<double>& in, int width, int height, double sigma_px,
+                                  BlurBorder border) {
   if (in.size() != size_t(width) * size_t(height)) throw std::invalid_argument("gaussian_blur: size mismatch");
   if (!(sigma_px > 0) || width == 0 || height == 0) return in;
   const std::vector<double> k = gaussian_kernel(sigma_px);
@@ -31,19 +40,17 @@ std::vector<double> gaussian_blur(const std::vector<double>& in, int width, int 
     const double* c = &in[size_t(y) * w];
     for (size_t x = 0; x < w; ++x) o[x] = k[size_t(r)] * c[x];
     for (int j = 1; j <= r; ++j) {
-      const double* up = &in[size_t(std::max(y - j, 0)) * w];
-      const double* dn = &in[size_t(std::min(y + j, height - 1)) * w];
+      const double* up = &in[size_t(border_index(y - j, height, border)) * w];
+      const double* dn = &in[size_t(border_index(y + j, height, border)) * w];
       const double kj = k[size_t(r + j)];
       for (size_t x = 0; x < w; ++x) o[x] += kj * (up[x] + dn[x]);
     }
   });
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 8), [&](const tbb::blocked_range<int>& rows) {
-    std::vector<double> buf(w + 2 * size_t(r));  // the row with ⌈4σ⌉ clamped pixels each side
+    std::vector<double> buf(w + 2 * size_t(r));  // the row with ⌈4σ⌉ border pixels each side
     for (int y = rows.begin(); y < rows.end(); ++y) {
       const double* t = &tmp[size_t(y) * w];
-      std::fill(buf.begin(), buf.begin() + r, t[0]);
-      std::copy(t, t + w, buf.begin() + r);
-      std::fill(buf.begin() + r + long(w), buf.end(), t[w - 1]);
+      for (int x = -r; x < width + r; ++x) buf[size_t(x + r)] = t[border_index(x, width, border)];
       double* o = &out[size_t(y) * w];
       const double* b = buf.data() + r;
       for (size_t x = 0; x < w; ++x) o[x] = k[size_t(r)] * b[x];

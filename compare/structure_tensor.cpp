@@ -10,7 +10,8 @@
 
 namespace phellem {
 
-StructureTensor structure_tensor(const std::vector<double>& h, int width, int height, double sigma_px) {
+StructureTensor structure_tensor(const std::vector<double>& h, int width, int height, double sigma_px,
+                                 BlurBorder border) {
   if (h.size() != size_t(width) * size_t(height) || width < 2 || height < 2)
     throw std::invalid_argument("structure_tensor: size mismatch or raster under 2×2");
   const size_t w = size_t(width);
@@ -31,9 +32,9 @@ StructureTensor structure_tensor(const std::vector<double>& h, int width, int he
       xy[i] = gx * gy;
     }
   });
-  j.xx = gaussian_blur(xx, width, height, sigma_px);
-  j.yy = gaussian_blur(yy, width, height, sigma_px);
-  j.xy = gaussian_blur(xy, width, height, sigma_px);
+  j.xx = gaussian_blur(xx, width, height, sigma_px, border);
+  j.yy = gaussian_blur(yy, width, height, sigma_px, border);
+  j.xy = gaussian_blur(xy, width, height, sigma_px, border);
   return j;
 }
 

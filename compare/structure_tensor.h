@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "compare/gaussian_blur.h"
+
 namespace phellem {
 
 // J = G(σ)∗(∇h ∇hᵀ), with ∇h by central differences (one-sided on the border, as numpy's
@@ -16,6 +18,7 @@ struct StructureTensor {
   double fissure_angle_deg(size_t i) const;
 };
 
-StructureTensor structure_tensor(const std::vector<double>& h, int width, int height, double sigma_px);
+StructureTensor structure_tensor(const std::vector<double>& h, int width, int height, double sigma_px,
+                                 BlurBorder border);
 
 }  // namespace phellem
