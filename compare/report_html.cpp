@@ -111,9 +111,8 @@ std::string histogram(const std::vector<double>& a, const std::vector<double>& b
   s << "<line x1=\"" << left << "\" y1=\"" << 10 + plot_h << "\" x2=\"" << w - 10 << "\" y2=\"" << 10 + plot_h
     << "\" stroke=\"#444\"/>";
   for (int t = 0; t <= 4; ++t)
-    s << "<text x=\"" << fixed(left + plot_w * t / 4, 1) << "\" y=\"" << h - 10 << "\" font-size=\"11\" text-anchor=\"middle\">"
-      << fixed(top * t / 4, 1) << "</text>";
-  s << "<text x=\"" << w - 12 << "\" y=\"" << h - 10 << "\" font-size=\"11\" text-anchor=\"end\">" << escape(unit) << "</text>";
+    s << "<text x=\"" << fixed(left + plot_w * t / 4 - (t == 4 ? 12 : 0), 1) << "\" y=\"" << h - 10 << "\" font-size=\"11\" text-anchor=\"middle\">"
+      << fixed(top * t / 4, 1) << (t == 4 ? " " + unit : std::string()) << "</text>";
   s << "</svg>";
   return s.str();
 }

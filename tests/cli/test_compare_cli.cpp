@@ -77,7 +77,7 @@ TEST(CompareCli, JsonNamesEveryStatisticOfBothInputs) {
 
 TEST(CompareCli, PrintsTheVerdictAndScore) {
   const auto& in = inputs();
-  const auto r = test::run_phellem("compare " + in.a + " " + in.b + " --scale A=10 --scale B=5");
+  const auto r = test::run_command(std::string(PHELLEM_BINARY) + " compare " + in.a + " " + in.b + " --scale A=10 --scale B=5");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("phellem compare: same bark (score 0."), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("spacing_h_mean"), std::string::npos) << r.output;

@@ -105,10 +105,17 @@ void write_height_png16(const std::string& path, const Heights& h) {
 }
 
 void write_albedo_png(const std::string& path, const Heights& h, const float ridge[3], const float fissure[3]) {
+  const auto [lo, hi] = std::minmax_element(h.z.begin(), h.z.end());
   std::vector<uint8_t> px(h.z.size() * 3);
   for (size_t i = 0; i < h.z.size(); ++i) {
-    const float* c = h.z[i] < -0.3f ? fissure : ridge;
-    for (int k = 0; k < 3; ++k) px[i * 3 + k] = uint8_t(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255));
+    const float t = *hi > *lo ? (h.z[i] - *lo) / (*hi - *lo) : 1.0f;  // 0 in the deepest fissure, 1 on the highest ridge
+    // A slow warm/cool drift across the image, as lichen and weathering give a photograph.
+    const int x = int(i % size_t(h.width)), y = int(i / size_t(h.width));
+    const float drift = 0.12f * std::sin(0.05f * float(x)) * std::cos(0.07f * float(y));
+    const float shift[3] = {drift, 0.0f, -drift};
+    for (int k = 0; k < 3; ++k)
+      px[i * 3 + k] =
+          uint8_t(std::lround(std::clamp(fissure[k] + (ridge[k] - fissure[k]) * t + shift[k], 0.0f, 1.0f) * 255));
   }
   auto out = OIIO::ImageOutput::create(path);
   OIIO::ImageSpec spec(h.width, h.height, 3, OIIO::TypeDesc::UINT8);

@@ -21,7 +21,8 @@ Heights smooth_noise(double width_cm, double height_cm, double px_per_cm, double
 
 // As a 16-bit greyscale PNG (heights stretched to the full code range).
 void write_height_png16(const std::string& path, const Heights& h);
-// An sRGB 8-bit albedo of the same size: ridges `ridge`, fissures `fissure` (display values).
+// An sRGB 8-bit albedo of the same size, from `fissure` at the lowest height to `ridge` at the
+// highest (display values), with a slow warm/cool drift across it.
 void write_albedo_png(const std::string& path, const Heights& h, const float ridge[3], const float fissure[3]);
 
 }  // namespace phellem::test
