@@ -110,6 +110,7 @@ TEST(CompareCli, EveryMistakeIsAClearErrorWithExitCode2) {
       {"one input", in.a + " --scale A=10", "expected two inputs"},
       {"unknown option", ab + "--scael A=10", "unknown option"},
       {"albedo size", ab + "--scale A=10 --scale B=5 --albedo A=" + in.b, "must cover the same pixels"},
+      {"memory", ab + "--scale A=10 --scale B=5 --memory-limit 1M", "--memory-limit"},
       {"unwritable report", ab + "--scale A=10 --scale B=5 -o " + in.dir + "/no/such/dir/r.html", "r.html"},
   };
   for (const BadCase& c : cases) {
