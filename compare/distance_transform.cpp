@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -14,8 +15,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Felzenszwalb & Huttenlocher 2012, Algorithm 1 (DT(f)): the lower envelope of the parabolas
 // (q − p)² + f(p) rooted at the finite samples, then read at every q. f and d have n entries;
 // v, fv (n) and z (n + 1) are scratch.
-void distance_1d(const double* f, double* d, int n, std::vector<int>& v, std::vector<double>& z,
-                 std::vector<double>& fv) {
+void distance_1d(const double* f, double* d, int n, std::vector<int>& v, std::vector<double>& z, std::vector<double>& fv) {
   int k = -1;
   for (int q = 0; q < n; ++q) {
     const double fq = f[q];
@@ -53,28 +53,39 @@ void distance_1d(const double* f, double* d, int n, std::vector<int>& v, std::ve
 
 }  // namespace
 
-// The 2-D squared transform is the 1-D one along rows, then along columns (F&H 2012, §2.2).
+// The 2-D squared transform is a 1-D transform along columns, then along rows (F&H 2012, §2.2;
+// the order is free). Along a column the input is binary (0 or +inf), so its 1-D transform is the
+// squared distance to the nearest background pixel of the column: one downward and one upward
+// sweep over whole rows (contiguous, no column gathering). The row pass is Algorithm 1.
 std::vector<double> euclidean_distance_transform(const std::vector<uint8_t>& mask, int width, int height) {
   if (mask.size() != size_t(width) * size_t(height)) throw std::invalid_argument("euclidean_distance_transform: size mismatch");
   const size_t w = size_t(width);
-  std::vector<double> f(mask.size()), g(mask.size());
-  for (size_t i = 0; i < mask.size(); ++i) f[i] = mask[i] ? kInf : 0.0;
+  constexpr int32_t kNone = std::numeric_limits<int32_t>::max() / 2;  // no background above/below yet
+  std::vector<int32_t> column(mask.size());                           // pixels to the nearest background pixel of the column
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* m = &mask[size_t(y) * w];
+    int32_t* d = &column[size_t(y) * w];
+    const int32_t* above = y > 0 ? d - w : nullptr;
+    for (size_t x = 0; x < w; ++x) d[x] = m[x] ? (above ? std::min(above[x] + 1, kNone) : kNone) : 0;
+  }
+  for (int y = height - 2; y >= 0; --y) {
+    int32_t* d = &column[size_t(y) * w];
+    const int32_t* below = d + w;
+    for (size_t x = 0; x < w; ++x) d[x] = std::min(d[x], below[x] + 1);
+  }
+  std::vector<double> out(mask.size());
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
     std::vector<int> v(w);
-    std::vector<double> z(w + 1), fv(w);
-    for (int y = rows.begin(); y < rows.end(); ++y) distance_1d(&f[size_t(y) * w], &g[size_t(y) * w], width, v, z, fv);
-  });
-  tbb::parallel_for(tbb::blocked_range<int>(0, width, 16), [&](const tbb::blocked_range<int>& cols) {
-    const size_t h = size_t(height);
-    std::vector<int> v(h);
-    std::vector<double> z(h + 1), fv(h), col(h), out(h);
-    for (int x = cols.begin(); x < cols.end(); ++x) {
-      for (size_t y = 0; y < h; ++y) col[y] = g[y * w + size_t(x)];  // gathered: the strided pass stays cache-friendly
-      distance_1d(col.data(), out.data(), height, v, z, fv);
-      for (size_t y = 0; y < h; ++y) f[y * w + size_t(x)] = std::sqrt(out[y]);
+    std::vector<double> z(w + 1), fv(w), f(w);
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      const int32_t* d = &column[size_t(y) * w];
+      for (size_t x = 0; x < w; ++x) f[x] = d[x] >= kNone ? kInf : double(d[x]) * double(d[x]);
+      double* o = &out[size_t(y) * w];
+      distance_1d(f.data(), o, width, v, z, fv);
+      for (size_t x = 0; x < w; ++x) o[x] = std::sqrt(o[x]);
     }
   });
-  return f;
+  return out;
 }
 
 }  // namespace phellem

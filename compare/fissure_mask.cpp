@@ -9,21 +9,19 @@
 
 namespace phellem {
 
-FissureMask fissure_mask(const std::vector<double>& z, int width, int height, double px_per_cm,
-                         const CompareParams& params) {
+FissureMask fissure_mask(const std::vector<float>& z, int width, int height, double px_per_cm, const CompareParams& params) {
   FissureMask f;
   // Plan §3.1: the high-pass removes the trunk's shape and slow relief; the small smoothing
   // removes pixel noise (and JPEG blocks) before thresholding.
-  const std::vector<double> low = gaussian_blur(z, width, height, params.highpass_sigma_cm * px_per_cm,
-                                                 params.blur_border);
-  f.hp.resize(z.size());
-  for (size_t i = 0; i < z.size(); ++i) f.hp[i] = z[i] - low[i];
+  f.hp = gaussian_blur(z, width, height, params.highpass_sigma_cm * px_per_cm, params.blur_border);  // low-pass
+  for (size_t i = 0; i < z.size(); ++i) f.hp[i] = z[i] - f.hp[i];
   f.hs = gaussian_blur(f.hp, width, height, params.smooth_sigma_cm * px_per_cm, params.blur_border);
   // Threshold halfway between the typical surface (median) and the deepest 5 % (P5): both are
   // percentiles, so the mask does not change under an affine change of the heights.
-  f.threshold = 0.5 * (median(f.hs) + percentile(f.hs, params.threshold_percentile));
+  const std::vector<double> q = percentiles(f.hs, {params.threshold_percentile, 50});
+  f.threshold = 0.5 * (q[1] + q[0]);
   std::vector<uint8_t> raw(z.size());
-  for (size_t i = 0; i < z.size(); ++i) raw[i] = f.hs[i] < f.threshold;
+  for (size_t i = 0; i < z.size(); ++i) raw[i] = double(f.hs[i]) < f.threshold;
   // Drop 8-connected components under min_component_cm2 (pits, noise).
   const Components all = label_components(raw, width, height);
   std::vector<int64_t> area(size_t(all.count) + 1, 0);

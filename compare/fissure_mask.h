@@ -11,16 +11,15 @@
 namespace phellem {
 
 struct FissureMask {
-  std::vector<double> hp;        // high-pass z − G(σ_hp)∗z
-  std::vector<double> hs;        // smoothed high-pass G(σ_s)∗hp
-  double threshold = 0;          // ½(median(hs) + P5(hs))
-  std::vector<uint8_t> mask;     // 1 = fissure: hs < threshold, small components dropped
-  Components components;         // of `mask` (the kept components, renumbered)
+  std::vector<float> hp;      // high-pass z − G(σ_hp)∗z
+  std::vector<float> hs;      // smoothed high-pass G(σ_s)∗hp
+  double threshold = 0;       // ½(median(hs) + P5(hs))
+  std::vector<uint8_t> mask;  // 1 = fissure: hs < threshold, small components dropped
+  Components components;      // of `mask` (the kept components, renumbered)
 };
 
 // `z` is height × width (normalised heights, high = high) at `px_per_cm`.
-FissureMask fissure_mask(const std::vector<double>& z, int width, int height, double px_per_cm,
-                         const CompareParams& params);
+FissureMask fissure_mask(const std::vector<float>& z, int width, int height, double px_per_cm, const CompareParams& params);
 
 // Plan §3.7: NOT(mask dilated by max(1, round(dilation_cm · px_per_cm)) iterations of the
 // 4-neighbour cross), i.e. the pixels farther than that city-block distance from any fissure.

@@ -8,17 +8,16 @@
 
 namespace phellem {
 
-// J = G(σ)∗(∇h ∇hᵀ), with ∇h by central differences (one-sided on the border, as numpy's
-// gradient). Components are height × width, row-major; y runs down the rows.
-struct StructureTensor {
-  int width = 0, height = 0;
-  std::vector<double> xx, yy, xy;
-  // Orientation of the fissure (the level line, eigenvector of the smaller eigenvalue) at pixel
-  // i, in degrees in [0, 180), counter-clockwise from +x with y up: 90 = along the trunk.
-  double fissure_angle_deg(size_t i) const;
-};
+// Orientation of the fissure (the level line, eigenvector of the smaller eigenvalue of J), in
+// degrees in [0, 180), counter-clockwise from +x with y up: 90 = along the trunk. J's y runs
+// down the rows.
+double fissure_angle_deg(double jxx, double jyy, double jxy);
 
-StructureTensor structure_tensor(const std::vector<double>& h, int width, int height, double sigma_px,
-                                 BlurBorder border);
+// The fissure angle at each of `pixels` (indices into h, height × width, row-major) from
+// J = G(σ)∗(∇h ∇hᵀ), with ∇h by central differences (one-sided on the border, as numpy's
+// gradient), in float. Only the window's column pass covers the raster; its row pass is
+// evaluated at `pixels` alone (the skeleton is a few % of the pixels).
+std::vector<double> fissure_angles_deg(const std::vector<float>& h, int width, int height, double sigma_px, BlurBorder border,
+                                       const std::vector<size_t>& pixels);
 
 }  // namespace phellem
