@@ -37,7 +37,8 @@ struct HeightImage {
 // Throws UserError (file = path) for a missing or unreadable file, a size over the image
 // limits (io/image_limits.h, checked from the header before any pixel is decoded), a
 // non-finite height, a FractureField or patch whose scale attributes are missing or not
-// positive, or a render EXR whose pixels are not all on an object.
+// positive, or a render EXR without the displacement layer or whose pixels are not all on an
+// object.
 HeightImage read_height_image(const std::string& path);
 
 // Linear Rec.709 RGB (integer images through OpenColorIO's sRGB texture transform; float

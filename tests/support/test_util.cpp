@@ -70,6 +70,12 @@ std::string temp_dir(const std::string& name) {
 std::string base64(const std::vector<unsigned char>& in) { return phellem::base64(in.data(), in.size()); }
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+std::string lying_hdr(const std::string& path, int width, int height) {
+  std::ofstream f(path, std::ios::binary);
+  f << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << height << " +X " << width << "\n";
+  f << std::string(64, '\x01');
+  return path;
+}
 std::string read_text(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
