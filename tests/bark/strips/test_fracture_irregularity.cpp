@@ -18,12 +18,14 @@ using namespace phellem::bark;
 
 namespace {
 
-// A vertical patch like the presets' at a tenth of their growth: 5 mm strips, 30 × 30 cm.
+// A vertical patch like the fissured preset's at a tenth of their growth: 5 mm strips, 30 × 30 cm.
 StripParams patch_params() {
   StripParams p = *strip_preset("fissured");
   p.steps = 250;
   p.growth_rate = 1.0024;
   p.seed = 5;
+  // The paper's model: every knob of the extension off (the preset turns some on).
+  p.toughness_fraction = p.anastomosis = p.fork_probability = p.weakness_noise = 0;
   return p;
 }
 
