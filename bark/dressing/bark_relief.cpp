@@ -190,16 +190,21 @@ ReliefResult apply_relief(FractureField& f, const ReliefLook& look, const DepthP
   standardize(detail, {});
 
   // The unit ridge relief: shoulder + detail, each with a P90 − P10 of about 1 (0.39 = 1/2.56,
-  // the P90 − P10 of a unit normal).
-  std::vector<float> unit(n);
-  for (size_t p = 0; p < n; ++p) unit[p] = float((1 - look.detail) * drop[p] + look.detail * 0.39 * detail[p]);
+  // the P90 − P10 of a unit normal). The shoulder merges into the fissure wall: the depth is
+  // the deeper of the wall and the shoulder (continuous at the lip, where the wall is 0).
+  std::vector<float> shoulder(n), fine(n);
+  for (size_t p = 0; p < n; ++p) {
+    shoulder[p] = float((1 - look.detail) * drop[p]);
+    fine[p] = float(look.detail * 0.39 * detail[p]);
+  }
+  auto relief_depth = [&](size_t p, double k) { return std::max(double(f.depth[p]), k * shoulder[p]) + k * fine[p]; };
 
   const std::vector<size_t> fs = thin(fis), rs = thin(rid);
   auto ratio_at = [&](double k) {
     std::vector<double> fd, rd;
     fd.reserve(fs.size()), rd.reserve(rs.size());
-    for (size_t p : fs) fd.push_back(f.depth[p] + k * unit[p]);
-    for (size_t p : rs) rd.push_back(f.depth[p] + k * unit[p]);
+    for (size_t p : fs) fd.push_back(relief_depth(p, k));
+    for (size_t p : rs) rd.push_back(relief_depth(p, k));
     return ratio_of(rd, fd);
   };
   double k = profile.max_depth / look.depth_ratio;
@@ -216,7 +221,7 @@ ReliefResult apply_relief(FractureField& f, const ReliefLook& look, const DepthP
       k = std::sqrt(lo * hi);
     }
   }
-  for (size_t p = 0; p < n; ++p) f.depth[p] += float(k * unit[p]);
+  for (size_t p = 0; p < n; ++p) f.depth[p] = float(relief_depth(p, k));
   res.scale = k;
   res.ratio = depth_ratio(f);
   return res;

@@ -2,7 +2,8 @@
 // strip bark read as bark instead of flat plateaus cut by smooth V/U trenches.
 //  - shoulder: a ridge rounds down towards the fissure lips, its height a function of the
 //    distance d to the nearest fissure, h = −S·(1 − d/w)² for d < w (a parabolic shoulder:
-//    steepest at the lip, level with the plate at d = w);
+//    steepest at the lip, level with the plate at d = w), merged into the fissure wall
+//    (depth = max(wall, shoulder): continuous at the lip);
 //  - detail: tileable fbm over the ridges and the fissures (it repeats exactly around θ);
 //  - rough walls: the fissure's depth profile (DepthProfile) × (1 + ε·n), n a zero-mean,
 //    unit-RMS tileable fbm, so the walls deviate from the profile by a relative RMS ε.
@@ -53,6 +54,8 @@ struct ReliefResult {
 
 // Adds the relief to field.depth (call before dress_colors). Fields without fissures or
 // ridges get only the walls' noise and the detail at 1/depth_ratio of the profile's max depth.
+// A ratio below what the relief can reach (mostly-shoulder relief on sparse fissures) gives
+// the lowest reachable one: `ratio` reports what was reached.
 ReliefResult apply_relief(FractureField& field, const ReliefLook& look, const DepthProfile& profile);
 
 }  // namespace phellem::bark

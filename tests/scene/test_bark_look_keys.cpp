@@ -24,7 +24,7 @@ std::string strips(const std::string& dressing) {
   return tree(R"({"model": "strips", "preset": "furrowed", "dressing": )" + dressing + "}");
 }
 std::string stress(const std::string& crack) {
-  return R"({"objects": [{"type": "sphere", "radius": 0.1, "bark": {"model": "stress", "crack": )" + crack + "}}]}";
+  return tree(R"({"model": "stress", "crack": )" + crack + "}");
 }
 
 void expect_error(const std::string& json, const std::string& where, const std::string& what) {

@@ -161,8 +161,11 @@ TEST(BarkLook, StressBarkRoundsDownTowardsTheCrackAndShadesItsRoughness) {
     p.position = Eigen::Vector3f(w + 0.001f * float(i), 0.01f, 0);
     const float depth = -relief.displace(p).offset;
     EXPECT_EQ(plain.displace(p).offset, 0.0f);
-    if (i < 10) EXPECT_LT(depth, prev) << i;  // rising away from the lip
-    if (i >= 10) EXPECT_NEAR(depth, 0.0f, 1e-7f) << i;
+    if (i < 10) {
+      EXPECT_LT(depth, prev) << i;  // rising away from the lip
+    } else {
+      EXPECT_NEAR(depth, 0.0f, 1e-7f) << i;
+    }
     prev = depth;
   }
   // Inside the crack the shoulder's full drop adds to the V.
