@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli/fit_objective.h"
+#include "compare/fit_objective.h"
 #include "cli/fit_report.h"
 #include "compare/common_scale.h"
 #include "compare/fit_parameters.h"

@@ -161,6 +161,18 @@ FitSpace stress_fit_space() {
   return s;
 }
 
+FitSpace restrict_space(const FitSpace& s, const std::vector<std::string>& keys) {
+  FitSpace r = s;
+  r.table.clear();
+  for (const FitParameter& row : s.table)
+    if (std::find(keys.begin(), keys.end(), row.key) != keys.end()) r.table.push_back(row);
+  if (r.table.size() != keys.size()) throw std::logic_error("restrict_space: unknown or repeated key");
+  std::vector<double> x;
+  for (const FitParameter& row : r.table) x.push_back(row.normalized(row.read(r.base)));
+  r.starts = {x};
+  return r;
+}
+
 FitSpace fit_space(FitModel model) { return model == FitModel::strips ? strip_fit_space() : stress_fit_space(); }
 
 HeightField simulate_candidate(const FitCandidate& c, const PatchSize& size, uint64_t seed) {

@@ -51,6 +51,10 @@ struct FitSpace {
   std::vector<double> values(const std::vector<double>& x) const;
 };
 
+// The space restricted to the rows named (the others keep the base's values); the starts
+// are the base's values. Throws std::logic_error for an unknown key.
+FitSpace restrict_space(const FitSpace& s, const std::vector<std::string>& keys);
+
 FitSpace strip_fit_space();
 FitSpace stress_fit_space();
 FitSpace fit_space(FitModel model);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 #include "compare/compare_score.h"
 #include "compare/fissure_statistics.h"

@@ -1,4 +1,4 @@
-#include "cli/fit_objective.h"
+#include "compare/fit_objective.h"
 
 #include "bark/stress/stress_mesh.h"
 #include "util/errors.h"
