@@ -8,23 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "compare/compare_params.h"  // CompareParams, kCompareParams
 #include "compare/height_field.h"
 
 namespace phellem {
-
-// Every fixed parameter of the measurement, in one place (also written to the JSON report).
-struct CompareParams {
-  double highpass_sigma_cm = 1.5;        // hp = z − G(σ)∗z
-  double smooth_sigma_cm = 0.1;          // hs = G(σ)∗hp
-  double min_component_cm2 = 0.25;       // smaller 8-connected fissure components are dropped
-  double tensor_sigma_cm = 0.3;          // structure tensor window
-  double vertical_halfwidth_deg = 30;    // |φ − 90°| ≤ this counts as vertical
-  double ridge_dilation_cm = 0.1;        // ridge = NOT(mask dilated by this)
-  double min_size_cm = 20;               // refuse smaller images (after resampling)
-  int min_size_px = 128;
-  double min_px_per_cm = 2;
-};
-inline constexpr CompareParams kCompareParams{};
 
 inline constexpr int kOrientationBins = 18;  // 10° bins centred on 0°, 10°, …, 170°
 
@@ -43,6 +30,8 @@ struct FissureStats {
   double width_mean = 0, width_std = 0;          // cm
   double length_median = 0;                      // cm, median vertical extent of fissures
   double depth_ratio = 0;                        // fissure depth / ridge relief
+  double skeleton_length_cm = 0;                 // Σ length weights of the skeleton
+  int components = 0;                            // fissure components kept
   std::optional<ColourStats> colour;
   // The samples behind the figures, for the report's histograms.
   std::vector<double> spacings_h_cm, widths_cm;

@@ -14,7 +14,7 @@ PACKAGES=(
   build-essential cmake ccache pkg-config git
   libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev
   libeigen3-dev libtinygltf-dev libtinyobjloader-dev libtbb-dev nlohmann-json3-dev libcgal-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libnlopt-cxx-dev chromium
 )
 
 missing=()
