@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <string>
 
@@ -55,6 +56,8 @@ int main(int argc, char** argv) {
     std::printf("%2d  full %.3f (score %.3f emd %5.1f) %.2fs   coarse %.3f (score %.3f emd %5.1f) %.2fs\n", k, f.f,
                 f.comparison.score, f.comparison.orientation_emd_deg, std::chrono::duration<double>(t1 - t0).count(), g.f,
                 g.comparison.score, g.comparison.orientation_emd_deg, std::chrono::duration<double>(t2 - t1).count());
+    if (std::getenv("FIT_VERBOSE"))
+      for (const auto& d : g.comparison.core) std::printf("      %-18s photo %8.3f  fit %8.3f  diff %.3f\n", d.name.c_str(), d.a, d.b, d.difference);
     a.push_back(f.f);
     b.push_back(g.f);
   }

@@ -144,7 +144,18 @@ Options parse(const std::vector<std::string>& args) {
       } catch (const std::invalid_argument&) {
         bad(a, "expected a memory size such as 6G, 512M, 1.5T or 50% (of physical memory), got \"" + o.memory_limit + "\"");
       }
-    } else if (a == "--memory-estimate")
+    } else if (a == "--scale" && fit)
+      o.scale = positive(a, value(), 10000, "the photo's scale in pixels per cm");
+    else if (a == "--albedo" && fit)
+      o.albedo = value();
+    else if (a == "--model" && fit) {
+      o.model = value();
+      if (o.model != "strips" && o.model != "stress") bad(a, "unknown model \"" + o.model + "\"; allowed: strips, stress");
+    } else if (a == "--time-budget" && fit)
+      o.time_budget = positive(a, value(), 1e6, "a time in seconds");
+    else if (a == "--max-evals" && fit)
+      o.max_evals = integer(a, value(), 1, 1000000000);
+    else if (a == "--memory-estimate")
       o.memory_estimate = true;
     else if (!a.empty() && a[0] == '-')
       bad(a, "unknown option for `" + o.command + "`\n" + usage());

@@ -42,9 +42,13 @@ FitParameter strip_row(std::string key, double lo, double hi, bool log, double S
           [member](const FitCandidate& c) { return c.strips.params.*member; }};
 }
 
+// The softest epidermis element of a flat patch (bark::validate's): hardened fractures are
+// softer when refracture is on.
+double softest(const SP& p) { return p.stiffness * (p.refracture_width > 0 ? p.refracture_stiffness : 1.0); }
+
 // The largest threshold noise that leaves the valid threshold range open (a little inside).
 double max_threshold_noise(const SP& p) {
-  const double kf = p.max_fracture_stiffness(), ks = p.stiffness;
+  const double kf = p.max_fracture_stiffness(), ks = softest(p);
   return 0.95 * (1.0 - kf / (ks + kf));
 }
 
@@ -102,12 +106,12 @@ FitSpace strip_fit_space() {
   t.push_back({"threshold/fraction", 0.05, 0.95, false,
                [](double v, FitCandidate& c) {
                  SP& p = c.strips.params;
-                 const bark::ThresholdRange r = bark::valid_threshold_range(p, p.stiffness);
+                 const bark::ThresholdRange r = bark::valid_threshold_range(p, softest(p));
                  p.threshold = f32(r.low + v * (r.high - r.low));
                },
                [](const FitCandidate& c) {
                  const SP& p = c.strips.params;
-                 const bark::ThresholdRange r = bark::valid_threshold_range(p, p.stiffness);
+                 const bark::ThresholdRange r = bark::valid_threshold_range(p, softest(p));
                  return r.high > r.low ? (p.S() - r.low) / (r.high - r.low) : 1.0;
                }});
   for (const char* name : {"fissured", "furrowed", "plated", "brittle"}) {
