@@ -46,11 +46,15 @@ FitParameter strip_row(std::string key, double lo, double hi, bool log, double S
 // softer when refracture is on.
 double softest(const SP& p) { return p.stiffness * (p.refracture_width > 0 ? p.refracture_stiffness : 1.0); }
 
-// The largest threshold noise that leaves the valid threshold range open (a little inside).
-double max_threshold_noise(const SP& p) {
+// K_f / (K_s + K_f): the valid threshold range is open while (1 − noise)(1 − weakness_noise)
+// stays above it.
+double stiffness_share(const SP& p) {
   const double kf = p.max_fracture_stiffness(), ks = softest(p);
-  return 0.95 * (1.0 - kf / (ks + kf));
+  return kf / (ks + kf);
 }
+
+// The largest threshold noise that leaves the valid threshold range open (a little inside).
+double max_threshold_noise(const SP& p) { return 0.95 * (1.0 - stiffness_share(p) / (1.0 - p.weakness_noise)); }
 
 // Rounds to float, as the scene parser reads numbers.
 double f32(double v) { return double(float(v)); }
@@ -95,7 +99,18 @@ FitSpace strip_fit_space() {
   t.push_back(strip_row("refracture_stiffness", 0.1, 1, false, &SP::refracture_stiffness));
   t.push_back({"depth/depth_per_width", 0.2, 3, true, [](double v, FitCandidate& c) { c.strips.depth.depth_per_width = v; },
                [](const FitCandidate& c) { return c.strips.depth.depth_per_width; }});
-  // The noise and the threshold depend on the stiffnesses and the growth: last, in this order.
+  // Irregular fissures (strips22's knobs; 0 = the paper's model).
+  t.push_back(strip_row("toughness_fraction", 0, 0.9, false, &SP::toughness_fraction));
+  t.push_back(strip_row("toughness_size", 0.005, 0.1, true, &SP::toughness_size));
+  t.push_back(strip_row("anastomosis", 0, 1, false, &SP::anastomosis));
+  t.push_back(strip_row("fork_probability", 0, 1, false, &SP::fork_probability));
+  t.push_back(strip_row("weakness_noise_size", 0.01, 0.3, true, &SP::weakness_noise_size));
+  // The noises and the threshold depend on the stiffnesses and the growth: last, in this order.
+  t.push_back({"weakness_noise", 0, 0.9, false,
+               [](double v, FitCandidate& c) {
+                 c.strips.params.weakness_noise = f32(std::min(v, 0.9 * (1.0 - stiffness_share(c.strips.params))));
+               },
+               [](const FitCandidate& c) { return c.strips.params.weakness_noise; }});
   // The noise is capped so that the valid threshold range stays open; the threshold is a
   // fraction of that range, so every candidate is valid.
   t.push_back({"threshold_noise", 0, 0.9, false,
@@ -106,8 +121,15 @@ FitSpace strip_fit_space() {
   t.push_back({"threshold/fraction", 0.05, 0.95, false,
                [](double v, FitCandidate& c) {
                  SP& p = c.strips.params;
-                 const bark::ThresholdRange r = bark::valid_threshold_range(p, softest(p));
+                 bark::ThresholdRange r = bark::valid_threshold_range(p, softest(p));
                  p.threshold = f32(r.low + v * (r.high - r.low));
+                 if (!(*p.threshold > r.low && *p.threshold <= r.high)) {
+                   // Stiff fractures on soft bark leave a range a few floats wide: without
+                   // the noises it is (G − 1)(1 − K_f/(K_s + K_f)) ≥ 1e-5 over the table.
+                   p.threshold_noise = p.weakness_noise = 0;
+                   r = bark::valid_threshold_range(p, softest(p));
+                   p.threshold = f32(r.low + v * (r.high - r.low));
+                 }
                },
                [](const FitCandidate& c) {
                  const SP& p = c.strips.params;

@@ -68,6 +68,14 @@ json strip_bark(const StripPatchParams& s, const std::string& preset, uint64_t s
   b["opening"] = {{"axis", p.opening_mix.x()}, {"one_side", p.opening_mix.y()}, {"both", p.opening_mix.z()}};
   b["refracture_width"] = p.refracture_width;
   b["refracture_stiffness"] = p.refracture_stiffness;
+  b["toughness_fraction"] = p.toughness_fraction;
+  b["toughness_size"] = p.toughness_size;
+  b["anastomosis"] = p.anastomosis;
+  b["anastomosis_reach"] = p.anastomosis_reach;
+  b["fork_probability"] = p.fork_probability;
+  b["fork_offset"] = p.fork_offset;
+  b["weakness_noise"] = p.weakness_noise;
+  b["weakness_noise_size"] = p.weakness_noise_size;
   b["seed"] = seed;
   b["depth"] = {{"profile", profile_name(s.depth.shape)},
                 {"max_depth", s.depth.max_depth},
@@ -160,6 +168,8 @@ void check_fitted_scene(const std::string& text, const FitCandidate& c) {
     expect_near("threshold_noise", a.threshold_noise, b.threshold_noise);
     expect_near("inglis_threshold", a.inglis_threshold, b.inglis_threshold);
     expect_near("propagation_jitter_deg", a.propagation_jitter_deg, b.propagation_jitter_deg);
+    expect_near("toughness_fraction", a.toughness_fraction, b.toughness_fraction);
+    expect_near("weakness_noise", a.weakness_noise, b.weakness_noise);
     expect_near("fracture_stiffness", a.max_fracture_stiffness(), b.max_fracture_stiffness());
     expect_near("depth/depth_per_width", trunk->tree.strip_bark->depth.depth_per_width, c.strips.depth.depth_per_width);
   } else {
