@@ -8,6 +8,7 @@
 #include "compare/fit_objective.h"
 #include "cli/fit_report.h"
 #include "compare/common_scale.h"
+#include "compare/compare_inputs.h"
 #include "compare/fit_parameters.h"
 #include "compare/fit_scene.h"
 #include "compare/fit_search.h"
@@ -107,20 +108,23 @@ int run_fit(const cli::Options& o) {
   const FitCandidate best = space.candidate(r.x);
   const uint64_t best_seed = fit_simulation_seed(seed, 0);
   const HeightField patch = simulate_candidate(best, {photo.width, photo.height, photo.px_per_cm}, best_seed);
-  const FissureAnalysis photo_a = analyse_fissures(photo, nullptr, o.scene);
-  const FissureAnalysis patch_a = analyse_fissures(patch, nullptr, patch_path);
-  FitReportInputs rep;
-  rep.photo = &photo_a;
-  rep.patch = &patch_a;
-  rep.comparison = compare_fissures(photo_a.stats, patch_a.stats);
-  rep.photo_name = o.scene;
-  rep.patch_name = patch_path;
+  // The compare report of patch.exr vs the photo, as `phellem compare` gives it.
+  const LoadedInput photo_in = load_input(CompareSource{"A", o.scene, o.scale, ""});
+  LoadedInput patch_in;
+  patch_in.source = CompareSource{"B", patch_path, patch.px_per_cm, ""};
+  patch_in.image.kind = HeightImage::Kind::patch;
+  patch_in.image.width = patch.width;
+  patch_in.image.height = patch.height;
+  patch_in.image.z = patch.z;
+  patch_in.image.px_per_cm_x = patch_in.image.px_per_cm_y = patch_in.px_per_cm_x = patch_in.px_per_cm_y = patch.px_per_cm;
+  const CompareReport report = compare_inputs(photo_in, patch_in);
   nlohmann::json params;
   const std::vector<double> values = space.values(r.x);
   for (size_t i = 0; i < space.table.size(); ++i) params[space.table[i].key] = values[i];
-  rep.fit = {{"model", o.model},
+  const nlohmann::json fit = {{"model", o.model},
              {"seed", seed},
              {"evaluations", r.history.size()},
+             {"seeds_per_evaluation", kSeedsPerEvaluation},
              {"time_budget_stopped", r.budget_stopped},
              {"objective", {{"mean", r.f}, {"min", r.f_min}, {"max", r.f_max}, {"seeds", r.replicates}}},
              {"eval_px_per_cm", s_eval},
@@ -135,11 +139,11 @@ int run_fit(const cli::Options& o) {
     if (!f || std::fclose(f) != 0 || !ok) throw UserError(fitted, "-o", "cannot write");
   });
   out.write("-o", patch_path, [&](const std::string& tmp) { write_patch_exr(patch, tmp); });
-  write_fit_reports(out, o.exr, rep);
+  write_fit_reports(out, o.exr, report, fit);
   out.commit();
   if (!o.quiet)
     std::fprintf(stderr, "phellem: fit %s: score %.3f, orientation EMD %.1f deg (%s), %zu evaluations, %.0fs\n", o.model.c_str(),
-                 rep.comparison.score, rep.comparison.orientation_emd_deg, rep.comparison.verdict.c_str(), r.history.size(),
+                 report.comparison.score, report.comparison.orientation_emd_deg, report.comparison.verdict.c_str(), r.history.size(),
                  since(t0));
   return 0;
 }

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "cli/compare.h"
 #include "cli/frame_sequence.h"
 #include "cli/fit.h"
 #include "cli/growth.h"
@@ -127,6 +128,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
+    if (!args.empty() && args[0] == "compare") return run_compare(std::vector<std::string>(args.begin() + 1, args.end()));
     const cli::Options o = cli::parse(args);
     if (o.threads) {
       static tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(*o.threads));

@@ -74,9 +74,11 @@ std::string usage() {
          "  phellem growth SCENE.json --frames N -o DIR/frame_%04d.exr [--png] [--mp4 OUT.mp4]\n"
          "                 [--spp N] [--res WxH] [--threads N] [--seed S] [--view NAME] [--quiet]\n"
          "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--no-mesh] [--threads N] [--quiet]\n"
+         "  phellem compare A B [--scale A=PX_PER_CM] [--scale B=PX_PER_CM] [--albedo A=FILE] [-o REPORT.html]\n"
+         "                 [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
          "  phellem fit HEIGHT_IMAGE --scale PX_PER_CM --model strips|stress -o DIR [--albedo IMAGE]\n"
          "                 [--time-budget S] [--max-evals N] [--seed S] [--threads N] [--quiet]\n"
-         "  Every command also takes [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
+         "  render, turntable, growth and simulate also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
          "  physical memory) and [--memory-estimate] (print the memory each stage needs, and stop).\n"
          "  phellem --help | --version\n"
          "Ranges: --spp N in [1, 1048576] (render.spp), --seed S in [0, 18446744073709551615]\n"
@@ -93,7 +95,7 @@ Options parse(const std::vector<std::string>& args) {
   o.command = args[0];
   if (o.command != "render" && o.command != "turntable" && o.command != "growth" && o.command != "simulate" &&
       o.command != "fit")
-    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, fit\n" + usage());
+    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, compare, fit\n" + usage());
   const bool fit = o.command == "fit";
   const bool frames = o.command == "turntable" || o.command == "growth";
   for (size_t i = 1; i < args.size(); ++i) {

@@ -11,6 +11,7 @@
 #include "cli/memory_check.h"
 #include "cli/outputs.h"
 #include "cli/simulate_stress.h"
+#include "io/height_image.h"
 #include "scene/scene_parser.h"
 #include "scene/strip_bark_tree.h"
 #include "util/errors.h"
@@ -28,7 +29,7 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // cylinder (s = length), so the image looks like the bark seen from outside, axis up. Written
 // to `tmp`, the staged temporary of `path`.
 void write_field(const bark::FractureField& f, const std::string& path, const std::string& tmp) {
-  const std::vector<std::string> names = {"color.R", "color.G",     "color.B", "opening", "depth",   "uv0.u",
+  const std::vector<std::string> names = {"color.R", "color.G",     "color.B", "opening", kFieldDepthChannel, "uv0.u",
                                           "uv0.v",   "fracture_id", "age",     "level",   "interior"};
   const int nc = int(names.size());
   std::vector<float> px(size_t(f.width) * f.height * nc);
@@ -43,8 +44,9 @@ void write_field(const bark::FractureField& f, const std::string& path, const st
   OIIO::ImageSpec spec(f.width, f.height, nc, OIIO::TypeDesc::FLOAT);
   spec.channelnames = names;
   spec.attribute("compression", "zip");
-  spec.attribute("phellem:length_m", float(f.length));
-  spec.attribute("phellem:circumference_m", float(f.circumference));
+  // io/height_image reads these back (`phellem compare`).
+  spec.attribute(kFieldLengthAttribute, float(f.length));
+  spec.attribute(kFieldCircumferenceAttribute, float(f.circumference));
   auto out = OIIO::ImageOutput::create(tmp);
   if (!out || !out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
     throw UserError(path, "-o", "cannot write EXR: " + OIIO::geterror());

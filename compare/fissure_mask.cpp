@@ -13,9 +13,8 @@ FissureMask fissure_mask(const std::vector<float>& z, int width, int height, dou
   FissureMask f;
   // Plan §3.1: the high-pass removes the trunk's shape and slow relief; the small smoothing
   // removes pixel noise (and JPEG blocks) before thresholding.
-  const std::vector<float> low = gaussian_blur(z, width, height, params.highpass_sigma_cm * px_per_cm, params.blur_border);
-  f.hp.resize(z.size());
-  for (size_t i = 0; i < z.size(); ++i) f.hp[i] = z[i] - low[i];
+  f.hp = gaussian_blur(z, width, height, params.highpass_sigma_cm * px_per_cm, params.blur_border);  // low-pass
+  for (size_t i = 0; i < z.size(); ++i) f.hp[i] = z[i] - f.hp[i];
   f.hs = gaussian_blur(f.hp, width, height, params.smooth_sigma_cm * px_per_cm, params.blur_border);
   // Threshold halfway between the typical surface (median) and the deepest 5 % (P5): both are
   // percentiles, so the mask does not change under an affine change of the heights.

@@ -7,18 +7,18 @@
 namespace phellem {
 
 // q in [0, 100]: the value at rank q/100·(n − 1) of the sorted values, interpolated linearly
-// between its two neighbours. `values` is taken by value and reordered. 0 for no values.
-// T is float or double.
+// between its two neighbours; 0 for no values. T is float or double (finite values).
 template <class T>
-double percentile(std::vector<T> values, double q);
+double percentile(const std::vector<T>& values, double q);
 template <class T>
-double median(std::vector<T> values) {
-  return percentile(std::move(values), 50);
+double median(const std::vector<T>& values) {
+  return percentile(values, 50);
 }
 
-// Several percentiles of one sample with a single copy, one result per q (in the order of `qs`).
+// Several percentiles of one sample, one result per q (in the order of `qs`), in two passes
+// over the values whatever the number of qs.
 template <class T>
-std::vector<double> percentiles(std::vector<T> values, const std::vector<double>& qs);
+std::vector<double> percentiles(const std::vector<T>& values, const std::vector<double>& qs);
 
 // Population mean and standard deviation (ddof = 0, as numpy's std); {0, 0} for no values.
 struct MeanStd {

@@ -8,6 +8,19 @@
 
 namespace phellem {
 
+// Header attributes (float) that state a height image's scale: a patch.exr's pixels per
+// centimetre (written by `phellem fit`), and a FractureField EXR's trunk length and
+// circumference in metres (written by `phellem simulate`).
+inline constexpr const char* kPxPerCmAttribute = "phellem:px_per_cm";
+inline constexpr const char* kFieldLengthAttribute = "phellem:length_m";
+inline constexpr const char* kFieldCircumferenceAttribute = "phellem:circumference_m";
+// The channels that make an EXR a FractureField (height = −depth), a render (the displacement
+// AOV, every pixel on an object) or a patch (Y, with kPxPerCmAttribute).
+inline constexpr const char* kFieldDepthChannel = "depth";
+inline constexpr const char* kRenderDisplacementChannel = "displacement.D";
+inline constexpr const char* kRenderObjectIdChannel = "object_id.id";
+inline constexpr const char* kPatchHeightChannel = "Y";
+
 struct HeightImage {
   enum class Kind { plain, fracture_field, render, patch };
   Kind kind = Kind::plain;
@@ -18,12 +31,19 @@ struct HeightImage {
   double px_per_cm_x = 0, px_per_cm_y = 0;
 };
 
+// Plain images give the raw code values of channel 0 (the mean of the first three for colour)
+// divided by the largest code (255, 65535), never linearized: gamma is not an affine change
+// of the heights; float images give their values as they are.
 // Throws UserError (file = path) for a missing or unreadable file, a size over the image
-// limits, a non-finite height, or a render EXR whose pixels are not all on an object.
+// limits (io/image_limits.h, checked from the header before any pixel is decoded), a
+// non-finite height, a FractureField or patch whose scale attributes are missing or not
+// positive, or a render EXR without the displacement layer or whose pixels are not all on an
+// object.
 HeightImage read_height_image(const std::string& path);
 
-// Linear Rec.709 RGB (8-bit and sRGB-tagged images through OpenColorIO's sRGB texture
-// transform), row 0 at the top.
+// Linear Rec.709 RGB (integer images through OpenColorIO's sRGB texture transform; float
+// images such as EXR as they are), row 0 at the top; grey gives R = G = B. `rgb` is
+// #height×#width×3. Throws UserError as read_height_image does.
 struct RgbImage {
   int width = 0, height = 0;
   std::vector<float> rgb;

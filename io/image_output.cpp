@@ -26,9 +26,9 @@ OCIO::ConstConfigRcPtr config() {
 }  // namespace
 
 std::vector<std::string> exr_channel_names() {
-  return {"beauty.R",   "beauty.G",   "beauty.B",     "beauty.A",   "albedo.R",   "albedo.G",
-          "albedo.B",   "normal.X",   "normal.Y",     "normal.Z",   "depth.Z",    "position.X",
-          "position.Y", "position.Z", "object_id.id", "crack.mask", "crack.depth"};
+  return {"beauty.R",   "beauty.G",   "beauty.B",     "beauty.A",   "albedo.R",    "albedo.G",
+          "albedo.B",   "normal.X",   "normal.Y",     "normal.Z",   "depth.Z",     "position.X",
+          "position.Y", "position.Z", "object_id.id", "crack.mask", "crack.depth", "displacement.D"};
 }
 
 void write_exr(const Film& f, const std::string& path) {
@@ -54,6 +54,7 @@ void write_exr(const Film& f, const std::string& path) {
     o[14] = f.object_id[p];
     o[15] = f.crack[p * 2];
     o[16] = f.crack[p * 2 + 1];
+    o[17] = f.displacement[p];
   }
   write_atomically(path, [&](const std::string& tmp) {
     auto out = OIIO::ImageOutput::create(tmp);

@@ -11,7 +11,8 @@
 namespace phellem {
 
 // Channel layout of the EXR (layer.channel): beauty.{R,G,B,A}, albedo.{R,G,B},
-// normal.{X,Y,Z}, depth.Z, position.{X,Y,Z}, object_id.id (32-bit float), crack.{mask,depth}.
+// normal.{X,Y,Z}, depth.Z, position.{X,Y,Z}, object_id.id (32-bit float), crack.{mask,depth},
+// displacement.D.
 std::vector<std::string> exr_channel_names();
 
 void write_exr(const Film& film, const std::string& path);

@@ -15,7 +15,9 @@ namespace {
 // (Film::kChannels floats) plus 72 for the EXR's interleaved float copy (68) and OpenEXR's
 // buffers, or 59 for the PNG (12 for the RGB copy, 3 for the 8-bit pixels, the rest the
 // display transform's working copy: OCIO processes the image as one long row).
-constexpr double kExrBytesPerPixel = 72;
+// The displacement layer (issue 22) added a float to the film and to the EXR's copy: 72 + 76,
+// measured the same way: 2000² with the EXR 722 MB (64²: 141 MB), 148.7 bytes a pixel.
+constexpr double kExrBytesPerPixel = 76;
 constexpr double kPngBytesPerPixel = 59;
 
 }  // namespace

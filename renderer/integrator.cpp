@@ -26,6 +26,7 @@ struct FirstHit {
   float depth = 0;
   int object_id = 0;
   float crack_mask = 0, crack_depth = 0;
+  float displacement = 0;
 };
 
 // A reflection must leave on the side it arrived on, a transmission on the other, judged by
@@ -70,6 +71,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
       first->object_id = hit.object_id;
       first->crack_mask = hit.crack_mask;
       first->crack_depth = hit.crack_depth;
+      first->displacement = hit.displacement;
     }
     if (mat.emissive()) {
       // Two-sided emitter.
@@ -180,7 +182,7 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
       for (int x = x0; x < std::min(x0 + kTile, width); ++x) {
         Color sum = Color::Zero(), albedo = Color::Zero();
         Vec3f normal = Vec3f::Zero(), position = Vec3f::Zero();
-        float depth = 0, coverage = 0, crack_mask = 0, crack_depth = 0;
+        float depth = 0, coverage = 0, crack_mask = 0, crack_depth = 0, displacement = 0;
         int object_id = 0;
         const uint32_t pixel_seed = Sampler::hash_pixel(uint32_t(x), uint32_t(y), seed);
         for (int i = 0; i < s.spp; ++i) {
@@ -202,6 +204,7 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
             depth += first.depth;
             crack_mask += first.crack_mask;
             crack_depth += first.crack_depth;
+            displacement += first.displacement;
           }
           if (i == 0) object_id = first.object_id;
         }
@@ -218,6 +221,7 @@ RenderResult render_image(const RenderScene& scene, const Camera& camera, int wi
         film.depth[p] = coverage > 0 ? depth / coverage : 0.0f;
         film.crack[p * 2] = crack_mask * inv;  // coverage-weighted like the albedo
         film.crack[p * 2 + 1] = coverage > 0 ? crack_depth / coverage : 0.0f;
+        film.displacement[p] = coverage > 0 ? displacement / coverage : 0.0f;
         film.object_id[p] = float(object_id);
       }
     rays += tile_rays;

@@ -268,6 +268,7 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   hit->object_id = inst ? inst->object_id : shape->object_id;
   hit->area_light = -1;
   hit->crack_mask = hit->crack_depth = 0;
+  hit->displacement = 0;
   hit->bark = false;
   hit->albedo_scale = 1.0f;
   if (shape->sphere) {
@@ -300,6 +301,8 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
     hit->uv = Vec2f(u, v);
     hit->uv_per_metre = 1.0f;
   }
+  if (!m.displacement.empty())
+    hit->displacement = w * m.displacement[idx[0]] + u * m.displacement[idx[1]] + v * m.displacement[idx[2]];
   if (shape->bark && !m.params.empty()) {
     const Vec2f q = w * m.params[idx[0]] + u * m.params[idx[1]] + v * m.params[idx[2]];
     const bark::BarkShade sh = shape->bark->shade(q);

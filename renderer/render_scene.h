@@ -38,6 +38,9 @@ struct SurfaceHit {
   // depth, and either a dressed albedo replacing the material's base colour (`bark`) or a
   // depth darkening of it (`albedo_scale`).
   float crack_mask = 0, crack_depth = 0;
+  // Offset of the diced surface along its base normal (m), from MeshData::displacement; 0 on
+  // geometry that was not displaced.
+  float displacement = 0;
   bool bark = false;
   Color bark_albedo = Color::Zero();
   float albedo_scale = 1.0f;

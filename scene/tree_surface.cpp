@@ -13,12 +13,14 @@ TreePart make_part(std::shared_ptr<const GeneralizedCylinder> cyl, const Displac
   const float L = float(cyl->length());
   const float circumference = kTwoPi * mean_radius;
   part.surface.periodic_u = true;
-  part.surface.position = [cyl, disp, L](float u, float v) {
+  part.surface.position = [cyl, disp, L](float u, float v, float* offset) {
     const double theta = 2.0 * M_PI * double(u);
     const Eigen::Vector3d p = cyl->position(v, theta);
     const Eigen::Vector3d n = cyl->normal(v, theta);
     const Vec3f pf = p.cast<float>();
-    return Vec3f(pf + n.cast<float>() * disp(Vec2f(u, v * L), pf));
+    const float d = disp(Vec2f(u, v * L), pf);
+    if (offset) *offset = d;
+    return Vec3f(pf + n.cast<float>() * d);
   };
   part.surface.texcoord = [uv_repeat, L, circumference](float u, float v) {
     return Vec2f(u * uv_repeat, v * L / circumference * uv_repeat);

@@ -58,7 +58,7 @@ GridRates compute_rates(const ParametricSurface& s, const DicingParams& d) {
   tbb::parallel_for(0, g.pv + 1, [&](int j) {
     std::array<Vec3f, kEdgeSamples + 1> pts;
     for (int i = 0; i < g.pu; ++i) {
-      for (int k = 0; k <= kEdgeSamples; ++k) pts[k] = s.position((i + float(k) / kEdgeSamples) / g.pu, float(j) / g.pv);
+      for (int k = 0; k <= kEdgeSamples; ++k) pts[k] = s.position((i + float(k) / kEdgeSamples) / g.pu, float(j) / g.pv, nullptr);
       g.h[j * g.pu + i] = d.edge_rate(pts.data(), kEdgeSamples + 1);
     }
     if (j == g.pv) return;
@@ -67,7 +67,7 @@ GridRates compute_rates(const ParametricSurface& s, const DicingParams& d) {
         g.vert[j * g.columns + i] = g.vert[j * g.columns];
         continue;
       }
-      for (int k = 0; k <= kEdgeSamples; ++k) pts[k] = s.position(float(i) / g.pu, (j + float(k) / kEdgeSamples) / g.pv);
+      for (int k = 0; k <= kEdgeSamples; ++k) pts[k] = s.position(float(i) / g.pu, (j + float(k) / kEdgeSamples) / g.pv, nullptr);
       g.vert[j * g.columns + i] = d.edge_rate(pts.data(), kEdgeSamples + 1);
     }
   });
@@ -158,6 +158,7 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d) {
   m.positions.resize(nv);
   m.normals.resize(nv);
   m.uvs.resize(nv);
+  m.displacement.resize(nv);
   if (s.keep_params) m.params.resize(nv);
   const float h = 1e-4f;
   auto evaluate = [&](size_t k) {
@@ -165,13 +166,13 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d) {
     m.uvs[k] = s.texcoord(p.u, p.v);
     if (s.keep_params) m.params[k] = Vec2f(p.u, p.v);
     if (p.copy_from >= 0) return;
-    m.positions[k] = s.position(p.u, p.v);
+    m.positions[k] = s.position(p.u, p.v, &m.displacement[k]);
     // Normal of the displaced surface by central differences (one-sided at open borders).
     const float u0 = s.periodic_u ? p.u - h : std::max(0.0f, p.u - h);
     const float u1 = s.periodic_u ? p.u + h : std::min(1.0f, p.u + h);
     const float v0 = std::max(0.0f, p.v - h), v1 = std::min(1.0f, p.v + h);
-    const Vec3f du = s.position(u1, p.v) - s.position(u0, p.v);
-    const Vec3f dv = s.position(p.u, v1) - s.position(p.u, v0);
+    const Vec3f du = s.position(u1, p.v, nullptr) - s.position(u0, p.v, nullptr);
+    const Vec3f dv = s.position(p.u, v1, nullptr) - s.position(p.u, v0, nullptr);
     Vec3f n = du.cross(dv);
     const float len = n.norm();
     m.normals[k] = len > 1e-20f ? Vec3f(n / len) : Vec3f(0, 1, 0);
@@ -183,6 +184,7 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d) {
     if (params[k].copy_from >= 0) {
       m.positions[k] = m.positions[params[k].copy_from];
       m.normals[k] = m.normals[params[k].copy_from];
+      m.displacement[k] = m.displacement[params[k].copy_from];
     }
   m.indices = std::move(indices);
   compute_tangents(m);
@@ -200,12 +202,14 @@ struct EdgeTable {
 };
 
 Vec3f displaced(const MeshData& m, const SurfaceDisplacementFn& disp, uint32_t a, uint32_t b, uint32_t c, const Vec3f& bary,
-                Vec2f* params = nullptr) {
+                Vec2f* params = nullptr, float* offset = nullptr) {
   const Vec3f p = bary[0] * m.positions[a] + bary[1] * m.positions[b] + bary[2] * m.positions[c];
   const Vec3f n = (bary[0] * m.normals[a] + bary[1] * m.normals[b] + bary[2] * m.normals[c]).normalized();
   Vec2f uv = Vec2f::Zero();
   if (!m.uvs.empty()) uv = bary[0] * m.uvs[a] + bary[1] * m.uvs[b] + bary[2] * m.uvs[c];
-  return p + n * disp(uv, p, n, params);
+  const float d = disp(uv, p, n, params);
+  if (offset) *offset = d;
+  return p + n * d;
 }
 
 EdgeTable edge_rates(const MeshData& m, const SurfaceDisplacementFn& disp, const DicingParams& d) {
@@ -309,10 +313,11 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
   m.positions.resize(verts.size());
   if (!base.uvs.empty()) m.uvs.resize(verts.size());
   if (keep_params) m.params.resize(verts.size());
+  m.displacement.resize(verts.size());
   std::vector<Vec3f> flat(verts.size()), smooth(verts.size());  // the grid undisplaced, for the normals below
   tbb::parallel_for(size_t(0), verts.size(), [&](size_t k) {
     const Origin& o = verts[k];
-    m.positions[k] = displaced(base, disp, o.a, o.b, o.c, o.bary, keep_params ? &m.params[k] : nullptr);
+    m.positions[k] = displaced(base, disp, o.a, o.b, o.c, o.bary, keep_params ? &m.params[k] : nullptr, &m.displacement[k]);
     flat[k] = o.bary[0] * base.positions[o.a] + o.bary[1] * base.positions[o.b] + o.bary[2] * base.positions[o.c];
     smooth[k] = (o.bary[0] * base.normals[o.a] + o.bary[1] * base.normals[o.b] + o.bary[2] * base.normals[o.c]).normalized();
     if (!base.uvs.empty()) m.uvs[k] = o.bary[0] * base.uvs[o.a] + o.bary[1] * base.uvs[o.b] + o.bary[2] * base.uvs[o.c];

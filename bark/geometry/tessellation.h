@@ -29,9 +29,11 @@ struct DicingParams {
   int edge_rate(const Vec3f* pts, int count) const;
 };
 
-// A parametric surface on [0,1]² (u may be periodic), already displaced.
+// A parametric surface on [0,1]² (u may be periodic), already displaced: `position` writes the
+// offset along the undisplaced surface's normal (m) to `offset` when it is not null, and dice()
+// keeps it per vertex in MeshData::displacement.
 struct ParametricSurface {
-  std::function<Vec3f(float u, float v)> position;
+  std::function<Vec3f(float u, float v, float* offset)> position;
   std::function<Vec2f(float u, float v)> texcoord;
   bool periodic_u = false;
   bool keep_params = false;  // store (u, v) per vertex in MeshData::params
@@ -45,7 +47,8 @@ long long estimate_triangles(const ParametricSurface& s, const DicingParams& d);
 MeshData dice(const ParametricSurface& s, const DicingParams& d);
 
 // Displaced triangle mesh: each input triangle is a patch, displaced along the interpolated
-// normal by `disp` (metres). Requires normals; UVs are interpolated when present.
+// normal by `disp` (metres), which MeshData::displacement keeps per vertex. Requires normals;
+// UVs are interpolated when present.
 // A displacement that also takes the undisplaced unit normal; when `params` is not null it
 // also writes the vertex's MeshData::params (e.g. the crack depth for shading) from the same
 // evaluation. dice() asks for them with `keep_params`.

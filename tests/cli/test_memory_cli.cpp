@@ -137,13 +137,13 @@ TEST(MemoryCli, AThousandMetreTrunkIsRefusedAtOnce) {
 }
 
 // A 12000² film passed the old check (68 bytes a pixel, twice, against all of physical
-// memory) and then failed in bad_alloc: the film and the EXR's copy take ~19 GiB.
+// memory) and then failed in bad_alloc: the film and the EXR's copy take ~20 GiB.
 TEST(MemoryCli, A12000SquareFilmIsRefusedAtResolution) {
   const std::string dir = test::temp_dir("memory_film");
   const std::string scene = write_scene(dir, {{"render", {{"resolution", {12000, 12000}}, {"spp", 1}}},
                                               {"objects", {{{"type", "sphere"}, {"center", {0, 1, 0}}, {"radius", 0.5}}}}});
   const Outcome r = run("render " + scene + " -o " + dir + "/out.exr --png " + dir + "/out.png");
-  expect_refused(r, "/render/resolution: needs about 18.8 GiB for the 12000x12000 film");
+  expect_refused(r, "/render/resolution: needs about 19.8 GiB for the 12000x12000 film");
   const Outcome o = run("render " + scene + " -o " + dir + "/out.exr --res 4000x3000 --memory-estimate");
   EXPECT_EQ(o.exit_code, 0) << o.output;  // --res overrides it
   const Outcome t = run("turntable " + scene + " --frames 2 -o " + dir + "/f_%04d.exr --res 12000x12000");
@@ -155,7 +155,7 @@ TEST(MemoryCli, A12000SquareFilmIsRefusedAtResolution) {
 // over the variable; bad sizes are refused.
 TEST(MemoryCli, TheBudgetDefaultsToAShareOfPhysicalMemory) {
   const Outcome r = run("render --res 32768x32768", "");
-  expect_refused(r, "--res: needs about 140.0 GiB");
+  expect_refused(r, "--res: needs about 148.0 GiB");
   EXPECT_NE(r.output.find("75% of this machine's"), std::string::npos) << r.output;
   const Outcome o = run("render --res 2000x2000 --memory-limit 200M --memory-estimate", "100G");
   expect_refused(o, "--res: needs about");

@@ -16,13 +16,7 @@
 namespace phellem {
 namespace {
 
-// A Radiance .hdr whose header claims width x height pixels, followed by a few bytes.
-std::string lying_hdr(const std::string& path, int width, int height) {
-  std::ofstream f(path, std::ios::binary);
-  f << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << height << " +X " << width << "\n";
-  f << std::string(64, '\x01');
-  return path;
-}
+using test::lying_hdr;
 
 TEST(ImageLimits, PixelAndMemoryLimits) {
   const double gib = 1024.0 * 1024.0 * 1024.0;

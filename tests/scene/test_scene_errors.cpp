@@ -106,20 +106,20 @@ TEST(Cli, TreeTooLargeForItsStripBarkExitsTwoAtOnce) {
 }
 
 TEST(Cli, FilmLargerThanMemoryIsRefusedBeforeRendering) {
-  // 32768 x 32768 pixels of 17 floats, and the EXR's copy: 140 GiB, more than 75 % of the
+  // 32768 x 32768 pixels of 18 floats, and the EXR's copy: 148 GiB, more than 75 % of the
   // memory of any machine this runs on (the default budget, scene/memory_estimate.h).
   const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   if (0.75 * physical > 32768.0 * 32768.0 * 140.0) GTEST_SKIP() << "this machine has the memory for the film";
   const auto r = test::run_phellem("render --res 32768x32768 --spp 1 -o /tmp/phellem_never.exr --quiet");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("phellem: error: <command line>: --res: needs about 140.0 GiB for the 32768x32768 film"),
+  EXPECT_NE(r.output.find("phellem: error: <command line>: --res: needs about 148.0 GiB for the 32768x32768 film"),
             std::string::npos)
       << r.output;
   const std::string dir = test::temp_dir("cli_big_film");
   test::write_text(dir + "/big.json", R"({"render": {"resolution": [32768, 32768], "spp": 1}})");
   const auto s = test::run_phellem("render " + dir + "/big.json -o " + dir + "/out.exr --quiet");
   EXPECT_EQ(s.exit_code, 2);
-  EXPECT_NE(s.output.find(dir + "/big.json: /render/resolution: needs about 140.0 GiB for the 32768x32768 film"),
+  EXPECT_NE(s.output.find(dir + "/big.json: /render/resolution: needs about 148.0 GiB for the 32768x32768 film"),
             std::string::npos)
       << s.output;
 }

@@ -1,5 +1,7 @@
 #include "tests/support/test_util.h"
 
+#include "util/base64.h"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <array>
@@ -65,24 +67,15 @@ std::string temp_dir(const std::string& name) {
   temp_dirs().dirs.push_back(d);
   return d.string();
 }
-std::string base64(const std::vector<unsigned char>& in) {
-  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  int val = 0, bits = -6;
-  for (unsigned char c : in) {
-    val = (val << 8) + c;
-    bits += 8;
-    while (bits >= 0) {
-      out.push_back(t[(val >> bits) & 0x3F]);
-      bits -= 6;
-    }
-  }
-  if (bits > -6) out.push_back(t[((val << 8) >> (bits + 8)) & 0x3F]);
-  while (out.size() % 4) out.push_back('=');
-  return out;
-}
+std::string base64(const std::vector<unsigned char>& in) { return phellem::base64(in.data(), in.size()); }
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+std::string lying_hdr(const std::string& path, int width, int height) {
+  std::ofstream f(path, std::ios::binary);
+  f << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << height << " +X " << width << "\n";
+  f << std::string(64, '\x01');
+  return path;
+}
 std::string read_text(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());

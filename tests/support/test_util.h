@@ -23,6 +23,9 @@ std::string temp_dir(const std::string& name);
 // Standard base64 (RFC 4648, padded), for data: URIs in test glTF files.
 std::string base64(const std::vector<unsigned char>& in);
 void write_text(const std::string& path, const std::string& text);
+// A Radiance .hdr at `path` whose header claims width × height pixels, followed by a few
+// bytes (image size limits are checked from the header); returns `path`.
+std::string lying_hdr(const std::string& path, int width, int height);
 // The whole file as bytes ("" if it cannot be read).
 std::string read_text(const std::string& path);
 // Files anywhere under `dir` whose name holds ".tmp": temporaries a run left behind.

@@ -1,0 +1,56 @@
+// The two sides of `phellem compare` (and the photo of `phellem fit`): read, given a scale,
+// and brought to one physical scale.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "compare/compare_score.h"
+#include "compare/fissure_statistics.h"
+#include "compare/height_field.h"
+#include "io/height_image.h"
+
+namespace phellem {
+
+// One input as the user named it.
+struct CompareSource {
+  std::string label;                // "A" or "B": how --scale and --albedo name it
+  std::string path;                 // height map, FractureField EXR, render EXR or patch.exr
+  std::optional<double> px_per_cm;  // --scale (overrides the file's own scale)
+  std::string albedo_path;          // --albedo (optional)
+};
+
+struct LoadedInput {
+  CompareSource source;
+  HeightImage image;
+  double px_per_cm_x = 0, px_per_cm_y = 0;  // resolved: --scale, else the file's
+  std::optional<RgbImage> albedo;
+};
+
+// Reads the height (and albedo) and resolves the scale. UserError when a plain image or a
+// render has no --scale, or the albedo's size differs from the height map's.
+LoadedInput load_input(const CompareSource& source);
+
+// An input at one isotropic scale (never finer than its own: the caller picks the coarser).
+struct PreparedInput {
+  CompareSource source;
+  double source_px_per_cm_x = 0, source_px_per_cm_y = 0;
+  HeightField field;
+  std::optional<AlbedoField> albedo;
+};
+PreparedInput at_scale(const LoadedInput& input, double px_per_cm);
+
+// The coarsest of the inputs' scales (both axes).
+double common_scale(const LoadedInput& a, const LoadedInput& b);
+
+struct CompareReport {
+  PreparedInput a, b;
+  FissureAnalysis analysis_a, analysis_b;
+  Comparison comparison;
+  double px_per_cm = 0;  // the common scale
+};
+
+// Brings both to the common scale, measures them and compares.
+CompareReport compare_inputs(const LoadedInput& a, const LoadedInput& b);
+
+}  // namespace phellem
