@@ -13,6 +13,7 @@
 
 #include "cli/compare.h"
 #include "cli/frame_sequence.h"
+#include "cli/fit.h"
 #include "cli/growth.h"
 #include "cli/memory_check.h"
 #include "cli/options.h"
@@ -136,6 +137,7 @@ int main(int argc, char** argv) {
     if (o.memory_estimate) return run_memory_estimate(o);
     if (o.command == "simulate") return run_simulate(o);
     if (o.command == "growth") return run_growth(o);
+    if (o.command == "fit") return run_fit(o);
     return o.command == "render" ? run_render(o) : run_turntable(o);
   } catch (const UserError& e) {
     std::cerr << "phellem: error: " << printable(e.what()) << "\n";

@@ -44,6 +44,17 @@ float degrees(const std::string& opt, const std::string& v) {
   return float(x);
 }
 
+// A positive finite number at most `hi`.
+double positive(const std::string& opt, const std::string& v, double hi, const std::string& what) {
+  const std::string range = "must be " + what + ", a number in (0, " + std::to_string(int64_t(hi)) + "]";
+  double x = 0;
+  auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (v.empty() || p != v.data() + v.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+    bad(opt, range + ", got \"" + v + "\"");
+  if (ec == std::errc::result_out_of_range || !std::isfinite(x) || !(x > 0) || x > hi) bad(opt, range + ", got " + v);
+  return x;
+}
+
 // Output names are checked before any work: a wrong extension found only when the file is
 // written would cost the whole render.
 void need_extension(const std::string& opt, const std::string& file, const std::string& ext) {
@@ -65,6 +76,8 @@ std::string usage() {
          "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--no-mesh] [--threads N] [--quiet]\n"
          "  phellem compare A B [--scale A=PX_PER_CM] [--scale B=PX_PER_CM] [--albedo A=FILE] [-o REPORT.html]\n"
          "                 [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
+         "  phellem fit HEIGHT_IMAGE --scale PX_PER_CM --model strips|stress -o DIR [--albedo IMAGE]\n"
+         "                 [--time-budget S] [--max-evals N] [--seed S] [--threads N] [--quiet]\n"
          "  render, turntable, growth and simulate also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
          "  physical memory) and [--memory-estimate] (print the memory each stage needs, and stop).\n"
          "  phellem --help | --version\n"
@@ -80,8 +93,10 @@ Options parse(const std::vector<std::string>& args) {
   Options o;
   if (args.empty()) bad("command", "no command given\n" + usage());
   o.command = args[0];
-  if (o.command != "render" && o.command != "turntable" && o.command != "growth" && o.command != "simulate")
-    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, compare\n" + usage());
+  if (o.command != "render" && o.command != "turntable" && o.command != "growth" && o.command != "simulate" &&
+      o.command != "fit")
+    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, compare, fit\n" + usage());
+  const bool fit = o.command == "fit";
   const bool frames = o.command == "turntable" || o.command == "growth";
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -131,21 +146,40 @@ Options parse(const std::vector<std::string>& args) {
       } catch (const std::invalid_argument&) {
         bad(a, "expected a memory size such as 6G, 512M, 1.5T or 50% (of physical memory), got \"" + o.memory_limit + "\"");
       }
-    } else if (a == "--memory-estimate")
+    } else if (a == "--scale" && fit)
+      o.scale = positive(a, value(), 10000, "the photo's scale in pixels per cm");
+    else if (a == "--albedo" && fit)
+      o.albedo = value();
+    else if (a == "--model" && fit) {
+      o.model = value();
+      if (o.model != "strips" && o.model != "stress") bad(a, "unknown model \"" + o.model + "\"; allowed: strips, stress");
+    } else if (a == "--time-budget" && fit)
+      o.time_budget = positive(a, value(), 1e6, "a time in seconds");
+    else if (a == "--max-evals" && fit)
+      o.max_evals = integer(a, value(), 1, 1000000000);
+    else if (a == "--memory-estimate")
       o.memory_estimate = true;
     else if (!a.empty() && a[0] == '-')
       bad(a, "unknown option for `" + o.command + "`\n" + usage());
     else if (a.empty())
-      bad("SCENE", "the scene file name is empty");
+      bad(fit ? "HEIGHT_IMAGE" : "SCENE", fit ? "the image file name is empty" : "the scene file name is empty");
     else if (o.scene.empty())
       o.scene = a;
     else
-      bad(a, "more than one scene file given");
+      bad(a, fit ? "more than one height image given" : "more than one scene file given");
   }
   if (o.command == "simulate") {
     if (o.scene.empty()) bad("simulate", "a scene file is required");
     if (o.exr.empty()) bad("-o", "required for simulate: the output folder");
     if (o.spp || !o.png.empty()) bad(o.spp ? "--spp" : "--png", "not an option of simulate");
+  }
+  if (fit) {
+    if (o.scene.empty()) bad("fit", "a height image is required");
+    if (o.exr.empty()) bad("-o", "required for fit: the output folder");
+    if (o.model.empty()) bad("--model", "required for fit: strips or stress");
+    if (o.spp || !o.png.empty() || !o.stats.empty() || o.width || o.memory_estimate)
+      bad(o.spp ? "--spp" : !o.png.empty() ? "--png" : !o.stats.empty() ? "--stats" : o.width ? "--res" : "--memory-estimate",
+          "not an option of fit");
   }
   if (o.command == "render") {
     if (!o.exr.empty()) need_extension("-o", o.exr, ".exr");

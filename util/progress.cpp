@@ -26,6 +26,11 @@ void Progress::advance(long long n) {
   draw(done, false);
 }
 
+void Progress::set_label(std::string label) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  label_ = std::move(label);
+}
+
 void Progress::finish() {
   if (finished_) return;
   finished_ = true;

@@ -14,11 +14,13 @@ class Progress {
   ~Progress();
   void advance(long long n = 1);
   void finish();
+  // Replaces the label (e.g. "fit (best 0.143)"); shown at the next redraw.
+  void set_label(std::string label);
   static bool terminal_attached();
 
  private:
   void draw(long long done, bool final);
-  std::string label_;
+  std::string label_;  // guarded by mutex_
   long long total_;
   bool enabled_;
   bool finished_ = false;

@@ -1,0 +1,25 @@
+// The cost of one `phellem fit` evaluation: a simulated patch at the photo's size and scale
+// (strips: fissured preset as the fit starts it; stress: the pine start), by size and scale.
+//   build/bench/phellem_bench_fit_eval --benchmark_filter=Strip
+#include <benchmark/benchmark.h>
+
+#include "compare/fit_parameters.h"
+
+using namespace phellem;
+
+static void run(benchmark::State& state, FitModel model) {
+  const FitSpace space = fit_space(model);
+  const FitCandidate c = space.candidate(space.starts[0]);
+  const PatchSize size{int(state.range(0)), int(state.range(0)), double(state.range(1))};
+  uint64_t seed = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(simulate_candidate(c, size, seed++));
+  state.counters["cm"] = size.width / size.px_per_cm;
+}
+
+static void BM_StripPatch(benchmark::State& state) { run(state, FitModel::strips); }
+BENCHMARK(BM_StripPatch)->Args({1024, 10})->Args({512, 5})->Args({512, 10})->Unit(benchmark::kMillisecond)->Iterations(3);
+
+static void BM_StressPatch(benchmark::State& state) { run(state, FitModel::stress); }
+BENCHMARK(BM_StressPatch)->Args({1024, 10})->Args({512, 5})->Unit(benchmark::kMillisecond)->Iterations(2);
+
+BENCHMARK_MAIN();

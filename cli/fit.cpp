@@ -1,0 +1,151 @@
+#include "cli/fit.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "compare/fit_objective.h"
+#include "cli/fit_report.h"
+#include "compare/common_scale.h"
+#include "compare/compare_inputs.h"
+#include "compare/fit_parameters.h"
+#include "compare/fit_scene.h"
+#include "compare/fit_search.h"
+#include "compare/patch_exr.h"
+#include "io/height_image.h"
+#include "util/errors.h"
+#include "util/output_set.h"
+#include "util/progress.h"
+
+namespace phellem {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Candidates are simulated and measured at this scale at most: the statistics are lengths in
+// cm measured at the common scale, so a coarser evaluation affords more evaluations
+// (bench/fit_eval; docs/compare.md has the figures).
+constexpr double kEvalPxPerCm = 5.0;
+constexpr double kDefaultTimeBudgetS = 600;
+// Each evaluation is the mean over this many simulation seeds: one realization's statistics
+// vary by about ±0.04 in score, and a search on one seed picks lucky realizations (measured
+// on bark_brown_01: the best point scored 0.19–0.26 over three seeds).
+constexpr int kSeedsPerEvaluation = 2;
+
+// The photo as a height field at one scale (its own: --scale, or what the file states).
+HeightField load_photo(const cli::Options& o) {
+  HeightImage img = read_height_image(o.scene);
+  double sx = img.px_per_cm_x, sy = img.px_per_cm_y;
+  if (o.scale) sx = sy = *o.scale;
+  if (!(sx > 0) || !(sy > 0)) throw UserError(o.scene, "--scale", "this image states no scale: give it in pixels per cm");
+  HeightField f;
+  f.width = img.width;
+  f.height = img.height;
+  f.px_per_cm = sx;
+  f.z = std::move(img.z);
+  if (sx != sy) f = resample(f, sx, sy, std::min(sx, sy));
+  return f;
+}
+
+FitModel model_of(const std::string& name) { return name == "stress" ? FitModel::stress : FitModel::strips; }
+
+}  // namespace
+
+int run_fit(const cli::Options& o) {
+  const auto t0 = Clock::now();
+  // Every output is checked before any work.
+  const std::filesystem::path dir(o.exr);
+  OutputSet out;
+  out.expect_folder("-o", o.exr);
+  const std::string fitted = (dir / "fitted.json").string(), patch_path = (dir / "patch.exr").string();
+  for (const std::string& f : {fitted, patch_path, (dir / "report.html").string(), (dir / "report.json").string()})
+    out.expect_file("-o", f);
+  if (!o.albedo.empty()) throw UserError(o.albedo, "--albedo", "not used by fit yet (the score ignores colour)");
+
+  const HeightField photo = load_photo(o);
+  const double s_eval = std::min(kEvalPxPerCm, photo.px_per_cm);
+  const HeightField photo_eval = s_eval < photo.px_per_cm ? resample(photo, photo.px_per_cm, photo.px_per_cm, s_eval) : photo;
+  const FissureAnalysis target = analyse_fissures(photo_eval, nullptr, o.scene);
+  const PatchSize eval_size{photo_eval.width, photo_eval.height, photo_eval.px_per_cm};
+
+  const FitSpace space = fit_space(model_of(o.model));
+  const uint64_t seed = o.seed.value_or(1);
+  FitSearchOptions so;
+  so.seed = seed;
+  so.max_evals = o.max_evals.value_or(0);
+  so.samples_per_dimension = 6;
+  so.time_budget_s = o.time_budget ? *o.time_budget : o.max_evals ? 0.0 : kDefaultTimeBudgetS;
+  // Keep back time for the final patch at the photo's scale and the outputs.
+  if (so.time_budget_s > 0) so.time_budget_s = std::max(1.0, so.time_budget_s - since(t0) - 15.0);
+  const bool timed = so.max_evals == 0;
+  Progress bar("fit", timed ? (long long)(so.time_budget_s * 10) : so.max_evals, !o.quiet);
+  const auto search_start = Clock::now();
+  long long shown = 0;
+  const FitSearchResult r = fit_search(
+      space.dimension(),
+      [&](const std::vector<double>& x, int replicate) {
+        const FitCandidate cand = space.candidate(x);
+        double f = 0;
+        for (int k = 0; k < kSeedsPerEvaluation; ++k)
+          f += score_candidate(cand, target.stats, eval_size, fit_simulation_seed(seed, replicate * kSeedsPerEvaluation + k)).f;
+        return f / kSeedsPerEvaluation;
+      },
+      space.starts, so,
+      [&](long long evals, double best) {
+        char label[64];
+        std::snprintf(label, sizeof label, "fit (best %.3f)", best);
+        bar.set_label(label);
+        const long long now = timed ? (long long)(since(search_start) * 10) : evals;
+        bar.advance(now - shown);
+        shown = now;
+      });
+  bar.finish();
+
+  // The best fit at the photo's size and scale, compared as `phellem compare` would.
+  const FitCandidate best = space.candidate(r.x);
+  const uint64_t best_seed = fit_simulation_seed(seed, 0);
+  const HeightField patch = simulate_candidate(best, {photo.width, photo.height, photo.px_per_cm}, best_seed);
+  // The compare report of patch.exr vs the photo, as `phellem compare` gives it.
+  const LoadedInput photo_in = load_input(CompareSource{"A", o.scene, o.scale, ""});
+  LoadedInput patch_in;
+  patch_in.source = CompareSource{"B", patch_path, patch.px_per_cm, ""};
+  patch_in.image.kind = HeightImage::Kind::patch;
+  patch_in.image.width = patch.width;
+  patch_in.image.height = patch.height;
+  patch_in.image.z = patch.z;
+  patch_in.image.px_per_cm_x = patch_in.image.px_per_cm_y = patch_in.px_per_cm_x = patch_in.px_per_cm_y = patch.px_per_cm;
+  const CompareReport report = compare_inputs(photo_in, patch_in);
+  nlohmann::json params;
+  const std::vector<double> values = space.values(r.x);
+  for (size_t i = 0; i < space.table.size(); ++i) params[space.table[i].key] = values[i];
+  const nlohmann::json fit = {{"model", o.model},
+             {"seed", seed},
+             {"evaluations", r.history.size()},
+             {"seeds_per_evaluation", kSeedsPerEvaluation},
+             {"time_budget_stopped", r.budget_stopped},
+             {"objective", {{"mean", r.f}, {"min", r.f_min}, {"max", r.f_max}, {"seeds", r.replicates}}},
+             {"eval_px_per_cm", s_eval},
+             {"parameters", params},
+             {"wall_s", since(t0)}};
+
+  const std::string scene_text = fitted_scene_json(best, space.preset, best_seed);
+  check_fitted_scene(scene_text, best);
+  out.write("-o", fitted, [&](const std::string& tmp) {
+    std::FILE* f = std::fopen(tmp.c_str(), "w");
+    const bool ok = f && std::fwrite(scene_text.data(), 1, scene_text.size(), f) == scene_text.size();
+    if (!f || std::fclose(f) != 0 || !ok) throw UserError(fitted, "-o", "cannot write");
+  });
+  out.write("-o", patch_path, [&](const std::string& tmp) { write_patch_exr(patch, tmp); });
+  write_fit_reports(out, o.exr, report, fit);
+  out.commit();
+  if (!o.quiet)
+    std::fprintf(stderr, "phellem: fit %s: score %.3f, orientation EMD %.1f deg (%s), %zu evaluations, %.0fs\n", o.model.c_str(),
+                 report.comparison.score, report.comparison.orientation_emd_deg, report.comparison.verdict.c_str(), r.history.size(),
+                 since(t0));
+  return 0;
+}
+
+}  // namespace phellem

@@ -1,0 +1,25 @@
+// A flat patch of strip-model bark as a height field (z = −depth), the size of a photo at its
+// scale. The strips do not wrap around (tile_theta = false); a margin is simulated on every
+// side and cropped, so the patch has no boundary effects.
+#pragma once
+
+#include <cstdint>
+
+#include "bark/strips/fracture_field.h"
+#include "bark/strips/strip_params.h"
+#include "compare/height_field.h"
+#include "compare/patch_size.h"
+
+namespace phellem {
+
+struct StripPatchParams {
+  bark::StripParams params;  // orientation, seed and tiling are set by strip_patch
+  bark::DepthProfile depth;
+};
+
+inline constexpr double kStripPatchMarginM = 0.05;
+
+// Throws bark::StripParamError for parameters the model refuses.
+HeightField strip_patch(const StripPatchParams& p, const PatchSize& size, uint64_t seed);
+
+}  // namespace phellem
