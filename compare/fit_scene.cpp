@@ -80,6 +80,10 @@ json strip_bark(const StripPatchParams& s, const std::string& preset, uint64_t s
   b["depth"] = {{"profile", profile_name(s.depth.shape)},
                 {"max_depth", s.depth.max_depth},
                 {"depth_per_width", s.depth.depth_per_width}};
+  if (s.relief.enabled)
+    b["dressing"]["relief"] = {{"depth_ratio", s.relief.depth_ratio}, {"shoulder_width", s.relief.shoulder_width},
+                               {"detail", s.relief.detail},           {"detail_size", s.relief.detail_size},
+                               {"wall_noise", s.relief.wall_noise},   {"wall_size", s.relief.wall_size}};
   return b;
 }
 

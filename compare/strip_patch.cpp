@@ -17,7 +17,8 @@ HeightField strip_patch(const StripPatchParams& in, const PatchSize& size, uint6
   bark::StripModel model(bark::flat_domain(W * m_per_px, H * m_per_px, p), p);
   while (model.steps_done() < model.steps_total()) model.step();
   model.settle();
-  const bark::FractureField f = bark::rasterize(model, W, H, in.depth);
+  bark::FractureField f = bark::rasterize(model, W, H, in.depth);
+  if (in.relief.enabled) bark::apply_relief(f, in.relief, in.depth);
   HeightField out;
   out.width = size.width;
   out.height = size.height;

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "bark/dressing/bark_relief.h"
 #include "bark/strips/fracture_field.h"
 #include "bark/strips/strip_params.h"
 #include "compare/height_field.h"
@@ -15,6 +16,7 @@ namespace phellem {
 struct StripPatchParams {
   bark::StripParams params;  // orientation, seed and tiling are set by strip_patch
   bark::DepthProfile depth;
+  bark::ReliefLook relief;  // the dressing's ridge relief and rough walls (off: flat ridges)
 };
 
 inline constexpr double kStripPatchMarginM = 0.05;
