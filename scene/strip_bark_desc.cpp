@@ -112,6 +112,14 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint64
   if (auto v = o.get("influence")) p.influence = v->non_negative();
   if (auto v = o.get("propagation_jitter_deg")) p.propagation_jitter_deg = v->number();
   if (auto v = o.get("propagation_tension")) p.propagation_tension = v->number();
+  if (auto v = o.get("toughness_fraction")) p.toughness_fraction = v->number();
+  if (auto v = o.get("toughness_size")) p.toughness_size = v->number();
+  if (auto v = o.get("anastomosis")) p.anastomosis = v->number();
+  if (auto v = o.get("anastomosis_reach")) p.anastomosis_reach = v->number();
+  if (auto v = o.get("fork_probability")) p.fork_probability = v->number();
+  if (auto v = o.get("fork_offset")) p.fork_offset = v->number();
+  if (auto v = o.get("weakness_noise")) p.weakness_noise = v->number();
+  if (auto v = o.get("weakness_noise_size")) p.weakness_noise_size = v->number();
   if (auto v = o.get("opening")) {
     JsonObject m = v->object();
     p.opening_mix = {m.number("axis", 0.0f), m.number("one_side", 0.0f), m.number("both", 0.0f)};

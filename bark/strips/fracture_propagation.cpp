@@ -183,6 +183,10 @@ void StripModel::propagate_from(size_t j, Sweep& sw) {
   const long up_strip = neighbour(true), down_strip = neighbour(false);
   auto sharp = [&](int32_t id) { return sw.sharp(id, domain_.strip_width, params_.inglis_threshold); };
   StreamRng rng(params_.seed ^ 0x70726f70ULL, j, uint64_t(sw.step));
+  // The irregular-fissure extension draws from its own stream, and only when it is on: the
+  // paper's streams (and results) stay as they were.
+  const bool irregular = params_.anastomosis > 0 || params_.fork_probability > 0;
+  StreamRng rng_irregular(params_.seed ^ 0x69727265ULL, j, uint64_t(sw.step));
   // aim() looks up the elements of this strip that fractures in the neighbours link back to;
   // the record → element table was last touched a step ago: fetch it now, all at once.
   {
@@ -216,10 +220,14 @@ void StripModel::propagate_from(size_t j, Sweep& sw) {
       side.up = up;
       side.theta = theta;
       side.jitter = jitter * rng.symmetric();  // drawn for every side: stable streams
+      if (irregular) {
+        side.join = rng_irregular.uniform();
+        side.fork = rng_irregular.uniform();
+      }
       const long t = up ? up_strip : down_strip;
       side.target = t < 0 || size_t(t) == j ? SIZE_MAX : size_t(t);
       if (side.target != SIZE_MAX && owner_[side.target] != sw.half)
-        sw.crossings.push_back({j, side.target, side.fe, up, side.jitter, sw.step});
+        sw.crossings.push_back({j, side.target, side.fe, up, side.jitter, side.join, side.fork, sw.step});
       else
         sides.push_back(side);
     }
@@ -227,7 +235,7 @@ void StripModel::propagate_from(size_t j, Sweep& sw) {
   // Each side's cut on its neighbour, computed for all sides first (independent computations
   // overlap in the processor), and again for a side whose target strip an earlier side changed.
   for (PropagationSide& side : sides)
-    if (side.target != SIZE_MAX) aim(j, side);
+    if (side.target != SIZE_MAX) aim_side(j, side, sw);
   bool changed_up = false, changed_down = false;
   for (PropagationSide& side : sides) {
     // Most sides change nothing (their tip is not drawn across, or would cut bark that is not
@@ -240,7 +248,7 @@ void StripModel::propagate_from(size_t j, Sweep& sw) {
       continue;
     }
     if (side.target == SIZE_MAX) continue;
-    if (side.up ? changed_up : changed_down) aim(j, side);
+    if (side.up ? changed_up : changed_down) aim_side(j, side, sw);
     if (!side.advances || !land(j, side, sw)) continue;
     // The target strip changed (a break moves its elements, a link its back links): later
     // sides aimed at it are aimed again. (Both neighbours are one strip when there are two.)
@@ -255,6 +263,7 @@ bool StripModel::land(size_t j, PropagationSide& side, Sweep& sw) {
   const size_t i = side.element;
   const Element& e = st.elements[i];
   int32_t g = -1;
+  const bool e_was_bark = e.kind != ElementKind::Fracture;
   size_t i_target = i;  // the fracture element linked to: met, or made by the break
   if (e.kind == ElementKind::Fracture) {
     // Fractures that meet merge (2001 sec. 4: the skeleton becomes a graph).
@@ -262,13 +271,16 @@ bool StripModel::land(size_t j, PropagationSide& side, Sweep& sw) {
     const size_t other = size_t(sw.skeleton.find(e.id));
     if (other != root && sw.skeleton.merge(int32_t(root), int32_t(other))) {
       sw.merges.emplace_back(int32_t(root), int32_t(other));
+      if (side.deviated) ++sw.joined;
       const size_t r = size_t(sw.skeleton.find(int32_t(root))), o = r == root ? other : root;
       sw.count[r] += sw.count[o];
       sw.width[r] += sw.width[o];
     }
   } else {
-    // Inglis' iso-strain curves run parallel to fractures: only bark in tension breaks.
+    // Inglis' iso-strain curves run parallel to fractures: only bark in tension breaks. Our
+    // extension: tough spots arrest the tip for good (its angle does not change).
     if (!strained(st, i)) return false;
+    if (params_.toughness_fraction > 0 && tough(ts, side.theta)) return false;
     double off = side.x - st.x[i];
     if (st.cyclic) off -= std::floor(off / st.circumference) * st.circumference;
     const double L = st.length(i);
@@ -293,6 +305,7 @@ bool StripModel::land(size_t j, PropagationSide& side, Sweep& sw) {
   (side.up ? src2.up : src2.down) = (side.up ? src_e.up : src_e.down) = g;
   if ((side.up ? ge2.down : ge2.up) < 0) (side.up ? ge2.down : ge2.up) = (side.up ? ge_e.down : ge_e.up) = side.fe;
   touched_[ts] = 1;
+  if (e_was_bark && side.fork < params_.fork_probability) fork(side, sw);
   return true;
 }
 
@@ -309,9 +322,11 @@ void StripModel::cross(const Crossing& c, Sweep& sw) {
   side.up = c.up;
   side.theta = centre_theta(c.strip, size_t(tip));
   side.jitter = c.jitter;
+  side.join = c.join;
+  side.fork = c.fork;
   side.target = c.target;
   sw.step = c.step;
-  aim(c.strip, side);
+  aim_side(c.strip, side, sw);
   if (side.advances && side.lands) land(c.strip, side, sw);
 }
 

@@ -37,6 +37,11 @@ std::optional<StripParams> strip_preset(const std::string& name) {
     p.propagation_tension = 0.3;
     p.propagation_jitter_deg = 5;
     p.opening_mix = {0, 0, 1};
+    // Issue 22 (our extension, measured against the Bark Brown scan at 10 px/cm): tough spots
+    // end the fissures at varying places (median length 102 -> 5 cm) and a weakness noise
+    // spaces them irregularly.
+    p.toughness_fraction = 0.08;
+    p.weakness_noise = 0.5;
   } else if (name == "plated") {
     // Broad plates between wide, deep fissures (pine): weak attachment (long plates), tips
     // that cut readily and wander, fissures wider than 5 cm harden and crack again (Figure 9).
@@ -47,6 +52,12 @@ std::optional<StripParams> strip_preset(const std::string& name) {
     p.propagation_jitter_deg = 25;
     p.refracture_width = 0.05;
     p.opening_mix = {0.5, 0.5, 0};
+    // Issue 22 (our extension, measured against the Pine scan): plates of varying length that
+    // interlace: tough spots, anastomosis, a few forks, irregular spacing.
+    p.toughness_fraction = 0.1;
+    p.anastomosis = 0.3;
+    p.fork_probability = 0.03;
+    p.weakness_noise = 0.6;
   } else if (name == "brittle") {
     // Short, angular brittle tears (Figure 17): low threshold noise, strong jitter, tips that
     // stop soon.
@@ -56,6 +67,9 @@ std::optional<StripParams> strip_preset(const std::string& name) {
     p.inglis_threshold = 30;
     p.propagation_jitter_deg = 35;
     p.opening_mix = {0, 1, 0};
+    // Issue 22 (our extension): tough spots stop the tears at varying lengths, irregular spacing.
+    p.toughness_fraction = 0.08;
+    p.weakness_noise = 0.5;
   } else if (name == "banded") {
     // Horizontal dashes (cherry, birch lenticels): strips along the axis (the paper's
     // horizontal variant), slow axial stretch, strong attachment, and tips that only cut bark

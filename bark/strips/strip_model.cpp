@@ -99,6 +99,8 @@ double StripModel::jittered_threshold(size_t j, double theta, StreamRng& rng) co
     const Eigen::Vector2d uv = surface_uv(j, theta);
     excess *= 1.0 - params_.weakness_strength * params_.weakness.sample(uv.x(), uv.y());
   }
+  // Our extension (issue 22): a smooth procedural weakness, irregular fracture spacing.
+  if (params_.weakness_noise > 0) excess *= 1.0 + params_.weakness_noise * smooth_noise(j, theta, params_.weakness_noise_size, 0x7765616bULL);
   return 1.0 + excess;
 }
 
@@ -404,7 +406,7 @@ void StripModel::start_sweep(Sweep& sw, int half, int halves) {
   sw.merges.clear();
   sw.crossings.clear();
   sw.exits.clear();
-  sw.propagated = 0;
+  sw.propagated = sw.joined = sw.forked = 0;
 }
 
 void StripModel::join_sweeps(int halves) {
@@ -419,6 +421,8 @@ void StripModel::join_sweeps(int halves) {
     const Sweep& sw = sweeps_[h];
     for (const auto& [a, b] : sw.merges) stats_.merged += skeleton_.merge(a, b) ? 1 : 0;
     stats_.propagated += sw.propagated;
+    stats_.joined += sw.joined;
+    stats_.forked += sw.forked;
     exits_.insert(exits_.end(), sw.exits.begin(), sw.exits.end());
   }
   if (halves < 2) return;
@@ -429,12 +433,14 @@ void StripModel::join_sweeps(int halves) {
   r.count.assign(r.skeleton.ids(), 0.0);
   r.width.assign(r.skeleton.ids(), 0.0);
   r.merges.clear();
-  r.propagated = 0;
+  r.propagated = r.joined = r.forked = 0;
   for (int h = 0; h < halves; ++h)
     for (const Crossing& c : sweeps_[h].crossings) cross(c, r);
   std::swap(r.skeleton, skeleton_);
   stats_.merged += long(r.merges.size());
   stats_.propagated += r.propagated;
+  stats_.joined += r.joined;
+  stats_.forked += r.forked;
 }
 
 void StripModel::sweep_step() {

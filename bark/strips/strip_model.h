@@ -50,6 +50,9 @@ struct StripStats {
   long long arrived = 0;                    // fractures continued from another cylinder (queue_arrival)
   long long max_breaks_per_strip_step = 0;  // largest number of breaks in one strip in one step
   long long capped = 0;                     // break loops stopped by the safety cap instead of the criterion (should stay 0)
+  // Our extension (issue 22): tips that deviated to meet another fracture (anastomosis), and
+  // second cuts made by forking tips.
+  long long joined = 0, forked = 0;
 };
 
 // A location on another surface that fractures propagating off this one should continue
@@ -274,6 +277,9 @@ class StripModel {
     // aim(): it advances onto a fracture (a merge) or onto bark in tension (a break); any other
     // side changes nothing.
     bool lands = false;
+    // Draws for the irregular-fissure extension (1: never), in [0, 1).
+    double join = 1, fork = 1;
+    bool deviated = false;  // aim_side(): drawn to another fracture (anastomosis)
   };
   // Epidermis element i of `s` strained enough for a fracture tip to cut it.
   bool strained(const Strip& s, size_t i) const;
@@ -281,6 +287,18 @@ class StripModel {
   // else +∞.
   double influence_distance(const Strip& s, size_t i, double x) const;
   void aim(size_t j, PropagationSide& side) const;
+  // The irregular-fissure extension (fracture_irregularity.cpp; our own, not the paper's).
+  // Final arc length of strip j (m).
+  double final_circumference(size_t j) const;
+  // Smooth value noise in [-1, 1] at strip j, angle θ, cells `size` metres along the strips and
+  // 4 × size across (weakness_noise).
+  double smooth_noise(size_t j, double theta, double size, uint64_t salt) const;
+  // Bark at strip j, angle θ is a tough spot that arrests propagating tips (toughness_fraction).
+  bool tough(size_t j, double theta) const;
+  // aim(), then anastomosis: a side that advances may deviate to meet another fracture.
+  void aim_side(size_t j, PropagationSide& side, const Sweep& sw) const;
+  // Forking: a second cut on the target strip after a side broke it at side.x.
+  void fork(PropagationSide& side, Sweep& sw);
   // A side of a free end aimed at a strip of the other half of the sweep: replayed at the
   // block's end (cross()).
   struct Crossing {
@@ -288,6 +306,7 @@ class StripModel {
     int32_t fe = -1;  // its fracture record (element indices may shift before the replay)
     bool up = true;
     double jitter = 0;
+    double join = 1, fork = 1;
     int step = 0;
   };
   // One half of a block's sweep: what it changes of the fracture bookkeeping, kept apart from
@@ -303,7 +322,7 @@ class StripModel {
     std::vector<Crossing> crossings;
     std::vector<PropagationExit> exits;
     std::vector<PropagationSide> sides;  // propagate_from's scratch list
-    long long propagated = 0;
+    long long propagated = 0, joined = 0, forked = 0;
     int32_t make_id() {
       const int32_t id = base + made++ * stride + half;
       skeleton.extend(size_t(id) + 1);

@@ -44,7 +44,9 @@ ThresholdRange valid_threshold_range(const StripParams& p, double softest_epider
   const double kf = p.max_fracture_stiffness(), ks = softest_epidermis;
   const double bound = 1.0 + (p.growth_rate - 1.0) * kf / (ks + kf);
   ThresholdRange r;
-  r.low = 1.0 + (bound - 1.0) / (1.0 - p.threshold_noise);
+  // The jittered thresholds 1 + (S − 1)(1 − noise) stay above the bound; weakness_noise (our
+  // extension) lowers S − 1 by up to that fraction more.
+  r.low = 1.0 + (bound - 1.0) / ((1.0 - p.threshold_noise) * (1.0 - p.weakness_noise));
   r.high = p.growth_rate;
   return r;
 }
@@ -115,6 +117,15 @@ std::optional<StripParamError> validate(const StripParams& p) {
   if (!(p.propagation_jitter_deg >= 0 && p.propagation_jitter_deg < 90))
     return err("propagation_jitter_deg", "must be in [0, 90)");
   if (!(p.propagation_tension >= 0 && p.propagation_tension <= 1)) return err("propagation_tension", "must be in [0, 1]");
+  if (!(p.toughness_fraction >= 0 && p.toughness_fraction < 1)) return err("toughness_fraction", "must be in [0, 1)");
+  if (!(p.anastomosis >= 0 && p.anastomosis <= 1)) return err("anastomosis", "must be in [0, 1]");
+  if (!(p.fork_probability >= 0 && p.fork_probability <= 1)) return err("fork_probability", "must be in [0, 1]");
+  if (!(p.weakness_noise >= 0 && p.weakness_noise < 1)) return err("weakness_noise", "must be in [0, 1)");
+  for (auto [key, v] : {std::pair<const char*, double>{"toughness_size", p.toughness_size},
+                        {"anastomosis_reach", p.anastomosis_reach},
+                        {"fork_offset", p.fork_offset},
+                        {"weakness_noise_size", p.weakness_noise_size}})
+    if (auto e = positive(key, v)) return e;
   if (!(p.opening_mix.minCoeff() >= 0) || !(p.opening_mix.sum() > 0))
     return err("opening", "weights must be >= 0 and not all zero");
   if (!(p.refracture_width >= 0)) return err("refracture_width", "must be >= 0 (0 disables refracture)");

@@ -75,6 +75,30 @@ struct StripParams {
   // least this fraction of the element's own threshold strain. Inglis' iso-strain curves run
   // parallel to a fracture, so tips do not cut into bark another fracture has relaxed.
   double propagation_tension = 0.5;
+  // Irregular fissures (our extension, issue 22; every knob at 0 leaves the paper's model
+  // unchanged bit for bit). Real bark's fissures have varying lengths, fork, meet and
+  // interlace (anastomose) and are irregularly spaced; the paper's tips run on while the
+  // bark across them is strained, so they cross the whole sample at a nearly constant pitch.
+  // Tough spots (length variation): this fraction of the bark, in spots `toughness_size` (m)
+  // long along the strip and one strip across, cannot be cut by a propagating tip (sec. 3.2.4
+  // says a tip advances into strained bark; here tough bark also arrests it). The spot still
+  // breaks when its own threshold is exceeded (sec. 3.2.3), starting a new, offset fracture.
+  double toughness_fraction = 0;  // in [0, 1)
+  double toughness_size = 0.02;   // > 0 (m)
+  // Anastomosis: with this probability per advance, a tip that can advance deviates by up to
+  // `anastomosis_reach` (m) sideways to meet another fracture in the next strip and merges
+  // with it (the merge of 2001 sec. 4, sought out instead of met by chance).
+  double anastomosis = 0;            // in [0, 1]
+  double anastomosis_reach = 0.015;  // > 0 (m)
+  // Forking: with this probability, a tip that cuts the next strip also cuts it a second time
+  // `fork_offset` (m, ×[0.5, 1], either side) away; the branch belongs to the same fracture.
+  double fork_probability = 0;  // in [0, 1]
+  double fork_offset = 0.015;   // > 0 (m)
+  // Spacing irregularity: a smooth value noise of cells `weakness_noise_size` (m) across the
+  // strips' direction (4× longer along the fractures) scales S − 1 by 1 ± weakness_noise, a
+  // procedural weakness map (sec. 3.2.3's jitter made low-frequency).
+  double weakness_noise = 0;          // in [0, 1)
+  double weakness_noise_size = 0.05;  // > 0 (m)
   // Opening (sec. 3.3, Figure 13): where new material appears; `opening_mix` gives the
   // probability of each mode [axis, one side, both] per fracture.
   Eigen::Vector3d opening_mix{1, 0, 0};

@@ -257,6 +257,9 @@ TEST(StripModel, FracturesDoNotStopAlongAHeightOfTheTrunk) {
     for (uint64_t seed : {1, 2, 3}) {
       StripParams p = *strip_preset(name);
       p.seed = seed;
+      // The paper's model: tough spots (issue 22) end fissures everywhere by design, which
+      // this absolute count of ends cannot tell from a seam.
+      p.toughness_fraction = p.anastomosis = p.fork_probability = p.weakness_noise = 0;
       StripModel m(oriented_domain(trunk, p), p);
       while (m.steps_done() < m.steps_total()) m.step();
       const EndsPeak peak = ends_peak(fracture_ends_per_strip(m));
