@@ -25,7 +25,7 @@ BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInpu
   else if (m.base_tex >= 0)
     base *= tex.rgb(m.base_tex, in.uv, in.footprint, in.primary);
   base = (base * in.base_scale).max(0.0f).min(1.0f);
-  float rough = m.roughness;
+  float rough = in.roughness_override >= 0 ? in.roughness_override : m.roughness;
   if (m.rough_tex >= 0) rough = std::clamp(rough * tex.scalar(m.rough_tex, in.uv, in.footprint, in.primary), 0.0f, 1.0f);
   b.base = base;
   b.alpha = rough * rough;

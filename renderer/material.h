@@ -26,6 +26,7 @@ struct ShadingInput {
   bool primary = true;                   // camera-ray hit: full-quality (bicubic) texture filtering
   const Color* base_override = nullptr;  // dressed bark albedo replacing the base colour
   float base_scale = 1.0f;               // multiplies the base colour (crack depth darkening)
+  float roughness_override = -1;         // the bark's own roughness replacing the material's (< 0: none)
 };
 
 BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInput& in, Color* albedo);

@@ -271,6 +271,7 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   hit->displacement = 0;
   hit->bark = false;
   hit->albedo_scale = 1.0f;
+  hit->bark_roughness = -1;
   if (shape->sphere) {
     const Vec3f n = (hit->p - shape->center).normalized();
     hit->ng = hit->ns = n;
@@ -311,6 +312,7 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
     hit->crack_depth = sh.depth;
     hit->bark_albedo = Color(sh.albedo.x(), sh.albedo.y(), sh.albedo.z());
     hit->albedo_scale = sh.albedo_scale;
+    hit->bark_roughness = sh.roughness;
   }
   if (!m.tangents.empty())
     hit->tangent = w * m.tangents[idx[0]] + u * m.tangents[idx[1]] + v * m.tangents[idx[2]];

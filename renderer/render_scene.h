@@ -44,6 +44,7 @@ struct SurfaceHit {
   bool bark = false;
   Color bark_albedo = Color::Zero();
   float albedo_scale = 1.0f;
+  float bark_roughness = -1;  // the bark's own roughness here (< 0: the material's)
 };
 
 struct GeometryStats {

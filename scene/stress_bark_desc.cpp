@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "bark/stress/stress_presets.h"
+#include "scene/bark_look_keys.h"
+#include "scene/bark_photo.h"
 #include "scene/json_reader.h"
 #include "scene/scene_image.h"
 
@@ -147,6 +149,14 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
       if (l.darkening > 1) w->fail("darkening must lie in [0, 1]");
     }
     if (auto w = m.get("gap")) l.gap = w->non_negative();
+    if (auto w = m.get("relief")) parse_crack_relief(w->object(), &l);
+    if (auto w = m.get("roughness")) l.roughness = parse_bark_roughness(w->object(), uint32_t(p.seed ^ (p.seed >> 32)) + 7);
+    if (auto w = m.get("photo")) {
+      const BarkPhoto ph = read_bark_photo(w->object(), base_dir);
+      l.colored = true;
+      l.ridge_color = ph.ridge;
+      l.fissure_color = ph.fissure;
+    }
     if (l.min_width > l.max_width) {
       char what[160];
       std::snprintf(what, sizeof what, "min_width (%g m) must not exceed max_width (%g m%s)", l.min_width, l.max_width,

@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "bark/strips/presets.h"
+#include "scene/bark_look_keys.h"
+#include "scene/bark_photo.h"
 #include "scene/json_reader.h"
 #include "scene/scene_image.h"
 
@@ -177,6 +179,22 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint64
   }
   if (auto v = o.get("dressing")) {
     JsonObject m = v->object();
+    // A photo first: explicit samples below override what it derives.
+    if (auto w = m.get("photo")) {
+      const BarkPhoto ph = read_bark_photo(w->object(), base_dir);
+      bark::FieldColors& c = d.colors;
+      c.epidermis.base = ph.ridge;
+      c.epidermis.variation = std::min(1.0f, ph.ridge_variation);
+      c.fracture.base = ph.fissure;
+      c.fracture.variation = std::min(1.0f, ph.fissure_variation);
+      c.hardened.base = 0.5f * (ph.ridge + ph.fissure);
+      c.ridge_tints = ph.ridge_tints;
+      c.fissure_tints = ph.fissure_tints;
+    }
+    // Seeds of the look's noise follow the scene's seed (the 64-bit seed folded to 32 bits).
+    const uint32_t look_seed = uint32_t(p.seed ^ (p.seed >> 32));
+    if (auto w = m.get("relief")) d.relief = parse_strip_relief(w->object(), look_seed + 5);
+    if (auto w = m.get("roughness")) d.colors.roughness = parse_bark_roughness(w->object(), look_seed + 7);
     if (auto w = m.get("epidermis")) d.colors.epidermis = read_sample(w->object(), base_dir, d.colors.epidermis);
     if (auto w = m.get("fracture")) d.colors.fracture = read_sample(w->object(), base_dir, d.colors.fracture);
     if (auto w = m.get("hardened")) d.colors.hardened = read_sample(w->object(), base_dir, d.colors.hardened);

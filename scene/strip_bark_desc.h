@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "bark/dressing/bark_relief.h"
 #include "bark/dressing/field_color.h"
 #include "bark/strips/fracture_field.h"
 #include "bark/strips/strip_params.h"
@@ -17,6 +18,7 @@ struct StripBarkDesc {
   bark::StripParams params;
   bark::DepthProfile depth;
   bark::FieldColors colors;               // dressing samples and depth darkening
+  bark::ReliefLook relief;                // ridge relief and rough walls (off by default)
   int field_width = 0, field_height = 0;  // FractureField resolution per cylinder (0: automatic)
 };
 

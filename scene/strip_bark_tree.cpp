@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "bark/dressing/bark_relief.h"
 #include "bark/dressing/fracture_mesh.h"
 #include "util/errors.h"
 #include "util/progress.h"
@@ -74,6 +75,7 @@ bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
   // Texels a quarter of a strip wide: fracture edges stay sharp in close-ups.
   if (W <= 0 || H <= 0) automatic_size(model, 4, 64, 16, 8192, &W, &H);
   bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
+  bark::apply_relief(f, desc_->relief, desc_->depth);
   // Circumference of the epidermis when it formed: the texture's period around (UV0 × C0).
   // Strips along the axis grow in length only, and their UV0 around is the angle.
   const double C0 = model.domain().along_axis

@@ -32,6 +32,7 @@ struct BarkShade {
   bool replaces_albedo = false;     // the bark's own albedo replaces the material's
   Eigen::Vector3f albedo{0, 0, 0};  // when replaces_albedo (depth darkening included)
   float albedo_scale = 1.0f;        // otherwise: the material's base colour × this
+  float roughness = -1;             // GGX roughness of the bark here (< 0: the material's own)
 };
 
 class BarkSurface {

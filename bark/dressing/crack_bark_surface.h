@@ -25,7 +25,7 @@ class CrackBarkSurface final : public BarkSurface {
 
  private:
   CrackProfile profile_;
-  float darkening_;
+  CrackLook look_;
 };
 
 }  // namespace phellem::bark

@@ -21,7 +21,7 @@ CrackProfile::CrackProfile(const bark::CrackedMesh& c, const CrackLook& look, ui
   for (const auto& e : c.crack_edges)
     seg_.push_back(
         {c.mesh.positions[e[0]].cast<float>(), c.mesh.positions[e[1]].cast<float>(), half_width(e[0]), half_width(e[1])});
-  reach_ = look.max_width * (1 + look.noise);
+  reach_ = look.max_width * (1 + look.noise) + look.shoulder_width;
   cell_ = std::max(reach_, 1e-4f);
   for (uint32_t i = 0; i < seg_.size(); ++i) {
     const Vec3f lo = seg_[i].a.cwiseMin(seg_[i].b).array() - reach_, hi = seg_[i].a.cwiseMax(seg_[i].b).array() + reach_;
@@ -80,7 +80,9 @@ CrackProfile::Sample CrackProfile::at(const Vec3f& p, const Vec3f& n) const {
   // The deepest V among the cracks whose width reaches p (sec. 4.2: ψ = k·(d_max − d)/d_max).
   Sample s;
   const float mod_w = 1 + look_.noise * fbm(p * kNoiseFrequency, seed_, 3);
-  const float mod_d = 1 + look_.noise * fbm(p * kNoiseFrequency, seed_ + 101, 3);
+  float mod_d = 1 + look_.noise * fbm(p * kNoiseFrequency, seed_ + 101, 3);
+  if (look_.wall_noise > 0) mod_d *= 1 + look_.wall_noise * fbm(p / look_.wall_size, seed_ + 202, 4);
+  float outside = std::numeric_limits<float>::infinity();  // distance beyond the nearest crack's half-width
   for_near(p, p, [&](uint32_t i) {
     const Segment& g = seg_[i];
     const Vec3f ab = g.b - g.a;
@@ -90,6 +92,7 @@ CrackProfile::Sample CrackProfile::at(const Vec3f& p, const Vec3f& n) const {
     off -= off.dot(n) * n;  // distance across the surface
     const float d = off.norm();
     const float w = ((1 - t) * g.wa + t * g.wb) * mod_w;
+    outside = std::min(outside, d - w);
     if (d >= w) return false;
     const float depth = std::min(look_.max_depth, look_.depth_per_width * w) * mod_d * (1 - d / w);
     if (depth > s.depth) s.depth = depth;
@@ -108,6 +111,11 @@ CrackProfile::Sample CrackProfile::at(const Vec3f& p, const Vec3f& n) const {
     }
   }
   s.relative = look_.max_depth > 0 ? std::clamp(s.depth / look_.max_depth, 0.0f, 1.0f) : 0.0f;
+  if (look_.shoulder > 0 && look_.shoulder_width > 0 && outside < std::numeric_limits<float>::infinity()) {
+    const float t = std::clamp(outside / look_.shoulder_width, 0.0f, 1.0f);
+    s.depth += look_.shoulder * look_.max_depth * (1 - t) * (1 - t);  // the parabolic shoulder (bark_relief.h)
+  }
+  if (look_.detail > 0) s.depth += look_.detail * look_.max_depth * fbm(p / look_.detail_size, seed_ + 303, 4);
   return s;
 }
 

@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "bark/dressing/bark_roughness.h"
 #include "bark/stress/cracked_mesh.h"
 #include "util/math.h"
 
@@ -33,6 +34,19 @@ struct CrackLook {
   // The visible gap (sec. 3.1.6, Figure 19): the half-width also grows by gap × the crack
   // vertex's summed virtual displacement from the relaxation (still capped at max_width).
   float gap = 0.0f;
+  // Relief between and in the cracks (issue 22; all 0: off), depths relative to max_depth:
+  // the surface rounds down towards each crack over `shoulder_width` metres beyond its
+  // half-width, by shoulder × max_depth at the lip (h = −S·(1 − d/w)², bark_relief.h); fbm
+  // detail of amplitude detail × max_depth and feature size detail_size everywhere; the V's
+  // depth × (1 + wall_noise · fbm) at wall_size (rough walls).
+  float shoulder = 0, shoulder_width = 0;
+  float detail = 0, detail_size = 0.008f;
+  float wall_noise = 0, wall_size = 0.004f;
+  bark::BarkRoughness roughness;  // ridges vs crack interiors (off: the material's)
+  // Colours replacing the material's base colour (a photo's ridges and fissures,
+  // scene/bark_photo.h), darkened with depth. Off unless `colored`.
+  bool colored = false;
+  Eigen::Vector3f ridge_color{0.5f, 0.5f, 0.5f}, fissure_color{0.3f, 0.3f, 0.3f};
 };
 
 class CrackProfile {

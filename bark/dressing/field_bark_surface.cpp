@@ -11,6 +11,7 @@ FieldBarkSurface::FieldBarkSurface(const FractureField& f, double max_depth)
   texels_.resize(size_t(width_) * height_);
   for (size_t p = 0; p < texels_.size(); ++p)
     texels_[p] = {f.depth[p], f.opening[p], f.color[3 * p], f.color[3 * p + 1], f.color[3 * p + 2]};
+  if (f.roughness.size() == texels_.size()) roughness_ = f.roughness;
 }
 
 template <class F>
@@ -50,6 +51,8 @@ BarkShade FieldBarkSurface::shade_at(double u, double v) const {
   s.mask = bilinear(u, v, [](const Texel& t) { return t.mask; });
   s.depth = std::clamp(float(bilinear(u, v, [](const Texel& t) { return t.depth; }) / max_depth_), 0.0f, 1.0f);
   s.albedo = bilinear(u, v, [](const Texel& t) { return Eigen::Vector3f(t.r, t.g, t.b); });
+  if (!roughness_.empty())
+    s.roughness = bilinear(u, v, [&](const Texel& t) { return roughness_[size_t(&t - texels_.data())]; });
   return s;
 }
 

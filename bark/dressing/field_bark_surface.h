@@ -31,7 +31,7 @@ class FieldBarkSurface final : public BarkSurface {
   int width() const { return width_; }
   int height() const { return height_; }
   double length() const { return length_; }
-  size_t memory_bytes() const override { return texels_.capacity() * sizeof(Texel); }
+  size_t memory_bytes() const override { return texels_.capacity() * sizeof(Texel) + roughness_.capacity() * sizeof(float); }
 
  private:
   struct Texel {
@@ -42,6 +42,7 @@ class FieldBarkSurface final : public BarkSurface {
   int width_ = 0, height_ = 0;
   double length_ = 0, max_depth_ = 1;
   std::vector<Texel> texels_;
+  std::vector<float> roughness_;  // per texel when the dressing varies it (else empty)
 };
 
 }  // namespace phellem::bark

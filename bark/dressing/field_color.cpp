@@ -21,6 +21,29 @@ double fit(double size, double period, int64_t* cells) {
   return period / double(*cells);
 }
 
+// The tint of the lattice cell (i, j) (wrapping after nx cells), smoothstep-blended between
+// cells like value noise (util/noise.h).
+Eigen::Vector3f tint_at(const std::vector<Eigen::Vector3f>& tints, double x, double y, double size, double period_x,
+                        uint32_t seed) {
+  int64_t nx;
+  const double cx = fit(size, period_x, &nx);
+  const double u = x / cx, v = y / size, fu = std::floor(u), fv = std::floor(v);
+  double tu = u - fu, tv = v - fv;
+  tu = tu * tu * (3 - 2 * tu);
+  tv = tv * tv * (3 - 2 * tv);
+  auto pick = [&](int64_t i, int64_t j) {
+    return tints[std::min(tints.size() - 1, size_t(lattice_hash01(i, j, seed, nx, 0) * float(tints.size())))];
+  };
+  const int64_t i = int64_t(fu), j = int64_t(fv);
+  return float((1 - tv) * (1 - tu)) * pick(i, j) + float((1 - tv) * tu) * pick(i + 1, j) + float(tv * (1 - tu)) * pick(i, j + 1) +
+         float(tv * tu) * pick(i + 1, j + 1);
+}
+
+// A fracture's tint: hashed from its skeleton id.
+const Eigen::Vector3f& fracture_tint(const std::vector<Eigen::Vector3f>& tints, float id) {
+  return tints[std::min(tints.size() - 1, size_t(lattice_hash01(int64_t(id), 0, 0x7f4a7c15u, 0, 0) * float(tints.size())))];
+}
+
 }  // namespace
 
 Eigen::Vector3f ColorSample::at(double x, double y, double period_x, double period_y) const {
@@ -55,6 +78,7 @@ Eigen::Vector3f ColorSample::at(double x, double y, double period_x, double peri
 
 void dress_colors(FractureField& f, const FieldColors& c, double max_depth, double initial_circumference, bool tile_s) {
   const double C = f.circumference, C0 = initial_circumference, Py = tile_s ? f.length : 0.0;
+  if (c.roughness.enabled()) f.roughness.assign(size_t(f.width) * f.height, 0.0f);
   tbb::parallel_for(0, f.height, [&](int y) {
     const double s = (y + 0.5) / f.height * f.length;
     for (int x = 0; x < f.width; ++x) {
@@ -63,14 +87,23 @@ void dress_colors(FractureField& f, const FieldColors& c, double max_depth, doub
       const ColorSample& skin_sample = f.level[p] > 0 && f.opening[p] <= 0 ? c.hardened : c.epidermis;
       // The epidermis is quasi-rigid: its pattern lives at the material coordinate (metres of
       // the original circumference), not at the current position.
-      const Eigen::Vector3f skin = skin_sample.at(f.uv0[2 * p] * C0, s, C0, Py);
+      Eigen::Vector3f skin = skin_sample.at(f.uv0[2 * p] * C0, s, C0, Py);
+      if (!c.ridge_tints.empty()) skin = skin.cwiseProduct(tint_at(c.ridge_tints, f.uv0[2 * p] * C0, s, c.tint_size, C0, 0x51ed27u));
       Eigen::Vector3f base = skin;
       if (f.opening[p] > 0) {
-        const Eigen::Vector3f inner = c.fracture.at(around, s, C, Py) * (1.0f - c.interior_darkening * f.interior[p]);
+        Eigen::Vector3f inner = c.fracture.at(around, s, C, Py) * (1.0f - c.interior_darkening * f.interior[p]);
+        if (!c.fissure_tints.empty()) inner = inner.cwiseProduct(fracture_tint(c.fissure_tints, f.fracture_id[p]));
         base = skin + f.opening[p] * (inner - skin);
       }
       const float dark = 1.0f - c.depth_darkening * float(std::clamp(f.depth[p] / max_depth, 0.0, 1.0));
       for (int k = 0; k < 3; ++k) f.color[3 * p + size_t(k)] = std::max(0.0f, base[k] * dark);
+      if (c.roughness.enabled()) {
+        const BarkRoughness& r = c.roughness;
+        int64_t nx;
+        const double cell = fit(r.noise_size, C, &nx);
+        const float n = 2 * tileable_value_noise(around / cell, s / r.noise_size, r.seed, nx, 0) - 1;
+        f.roughness[p] = r.at(f.opening[p], n);
+      }
     }
   });
 }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bark/dressing/bark_roughness.h"
 #include "bark/strips/fracture_field.h"
 
 namespace phellem::bark {
@@ -45,6 +46,13 @@ struct FieldColors {
   ColorSample hardened = ColorSample::procedural({0.34f, 0.25f, 0.19f}, 0.25f, 0.004, 37);  // refractured old fracture surface
   float interior_darkening = 0.35f;  // oldest fracture material × (1 − this) relative to the newest
   float depth_darkening = 0.7f;      // albedo × (1 − k · depth / max_depth)
+  // Per-plate and per-fracture colour variation (a photo's distribution, scene/bark_photo):
+  // each fracture multiplies its sample by fissure_tints[hash(id)]; the epidermis by a tint
+  // picked per tint_size cell of its material coordinate (so a tint stays on its plate and
+  // is torn apart with it). Empty: no tints.
+  std::vector<Eigen::Vector3f> ridge_tints, fissure_tints;
+  double tint_size = 0.04;  // m
+  BarkRoughness roughness;  // off by default: the material's roughness
 };
 
 // Fills field.color; `initial_circumference` (m) scales the material coordinate UV0. With

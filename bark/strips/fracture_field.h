@@ -39,6 +39,7 @@ struct FractureField {
   std::vector<float> age;          // growth steps since the fracture appeared (0 on epidermis)
   std::vector<float> level;        // refracture level of the surface (0 = original epidermis)
   std::vector<float> color;        // 3 per pixel, filled by dressing
+  std::vector<float> roughness;    // filled by dressing when it varies the roughness (else empty)
   size_t index(int x, int y) const { return size_t(y) * width + x; }
 };
 
