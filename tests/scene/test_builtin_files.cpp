@@ -74,6 +74,15 @@ TEST(BuiltinFiles, UnknownNameListsTheNames) {
             std::string::npos);
 }
 
+TEST(BuiltinFiles, EnvironmentClampIsPositive) {
+  EXPECT_NE(test::error_of(R"({"lights": [{"type": "environment", "file": "builtin:rooitou_park_1k.hdr", "clamp": 0}]})")
+                .find("/lights/0/clamp: clamp must be > 0"),
+            std::string::npos);
+  const SceneDesc d = parse_scene(R"({"lights": [{"type": "environment", "file": "builtin:rooitou_park_1k.hdr", "clamp": 50}]})",
+                                  "scene.json", ".");
+  EXPECT_EQ(d.lights[0].clamp, 50.0f);
+}
+
 TEST(BuiltinFilesCli, RendersFromAnEmptyFolderAndRefusesUnknownNames) {
   const std::string dir = test::temp_dir("builtin_files_cli"), data = test::temp_dir("builtin_files_cli_out");
   const std::string ok = R"({"render": {"resolution": [16, 8], "spp": 2},
