@@ -1,6 +1,5 @@
 #include "renderer/scene_lights.h"
 
-
 #include <algorithm>
 #include <cmath>
 

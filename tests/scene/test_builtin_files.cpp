@@ -90,8 +90,8 @@ TEST(BuiltinFilesCli, RendersFromAnEmptyFolderAndRefusesUnknownNames) {
                {"type": "sun", "direction": [0.6, 0.2, -0.8], "irradiance": 6}],
     "objects": [{"type": "sphere", "radius": 1}]})";
   test::write_text(data + "/ok.json", ok);
-  auto r = test::run_command("cd " + dir + " && " PHELLEM_BINARY " render " + data + "/ok.json -o " + data +
-                             "/ok.exr --quiet 2>&1");
+  auto r =
+      test::run_command("cd " + dir + " && " PHELLEM_BINARY " render " + data + "/ok.json -o " + data + "/ok.exr --quiet 2>&1");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::is_regular_file(data + "/ok.exr"));
   std::string bad = ok;
@@ -99,7 +99,8 @@ TEST(BuiltinFilesCli, RendersFromAnEmptyFolderAndRefusesUnknownNames) {
   test::write_text(data + "/bad.json", bad);
   r = test::run_phellem("render " + data + "/bad.json -o " + data + "/bad.exr");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("phellem: error: " + data + "/bad.json: /lights/0/file: unknown builtin file \"builtin:rooitou.hdr\"; "
+  EXPECT_NE(r.output.find("phellem: error: " + data +
+                          "/bad.json: /lights/0/file: unknown builtin file \"builtin:rooitou.hdr\"; "
                           "builtin files: builtin:rooitou_park_1k.hdr"),
             std::string::npos)
       << r.output;
