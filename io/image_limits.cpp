@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "io/builtin_files.h"
 #include "util/memory.h"
 
 namespace phellem {
@@ -42,9 +43,10 @@ std::optional<std::string> image_size_problem(int64_t width, int64_t height, int
 }
 
 std::optional<OIIO::ImageSpec> read_image_header(const std::string& file, std::string* why) {
-  auto in = OIIO::ImageInput::open(file);
+  ImageSource src = open_image_source(file);
+  auto& in = src.in;
   if (!in) {
-    *why = "cannot read image " + file + ": " + OIIO::geterror();
+    *why = "cannot read image " + file + ": " + src.why;
     return std::nullopt;
   }
   OIIO::ImageSpec spec = in->spec();

@@ -22,7 +22,7 @@ constexpr double kMaxImageMemoryFraction = 0.25;
 std::optional<std::string> image_size_problem(int64_t width, int64_t height, int64_t depth, int64_t channels,
                                               double physical_bytes = 0);
 
-// Opens `file` and reads only its header. Returns the spec of its first subimage, or nullopt
+// Opens `file` (or a "builtin:" file, io/builtin_files.h) and reads only its header. Returns the spec of its first subimage, or nullopt
 // with `*why` saying what is wrong: unreadable, or too large to decode (image_size_problem).
 std::optional<OIIO::ImageSpec> read_image_header(const std::string& file, std::string* why);
 

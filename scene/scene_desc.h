@@ -60,6 +60,7 @@ struct LightDesc {
   std::string file;  // environment map (resolved path)
   float intensity = 1.0f;
   float rotation_deg = 0.0f;
+  float clamp = 0.0f;  // environment map: luminance clamped to this (0 = off), e.g. a sun disk given as a `sun`
   Vec3f direction{0, 1, 0};  // sun / sky: towards the sun (normalized)
   bool has_direction = false;
   float irradiance = 1.0f;             // sun: irradiance on a surface facing it

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "io/builtin_files.h"
 #include "io/image_limits.h"
 #include "scene/json_reader.h"
 
@@ -11,10 +12,15 @@ namespace phellem {
 
 SceneImage read_scene_image(const JsonValue& v, const std::string& base_dir) {
   std::filesystem::path p(v.string());
-  if (p.is_relative()) p = std::filesystem::path(base_dir) / p;
-  if (!std::filesystem::is_regular_file(p)) v.fail("file not found: " + p.string());
-  auto in = OIIO::ImageInput::open(p.string());
-  if (!in) v.fail("cannot read image " + p.string() + ": " + OIIO::geterror());
+  if (is_builtin_path(v.string())) {
+    if (auto why = builtin_problem(v.string()); !why.empty()) v.fail(why);
+  } else {
+    if (p.is_relative()) p = std::filesystem::path(base_dir) / p;
+    if (!std::filesystem::is_regular_file(p)) v.fail("file not found: " + p.string());
+  }
+  ImageSource src = open_image_source(p.string());
+  auto& in = src.in;
+  if (!in) v.fail("cannot read image " + p.string() + ": " + src.why);
   const OIIO::ImageSpec& spec = in->spec();
   // The header alone decides whether the pixels may be decoded (io/image_limits.h).
   if (auto why = image_size_problem(spec.width, spec.height, spec.depth, spec.nchannels))

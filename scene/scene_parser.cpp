@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/builtin_files.h"
 #include "scene/json_reader.h"
 
 namespace phellem {
@@ -19,9 +20,16 @@ struct Ctx {
   std::string file;
   fs::path base_dir;
 
-  std::string resolve(const JsonValue& v, bool must_exist = true) const {
+  // A file name against the scene's folder. `builtin`: a "builtin:<name>" file
+  // (io/builtin_files.h) may stand for it, as it may wherever OpenImageIO reads the image.
+  std::string resolve(const JsonValue& v, bool must_exist = true, bool builtin = false) const {
     const std::string s = v.string();
     if (s.empty()) v.fail("file name is empty");
+    if (is_builtin_path(s)) {
+      if (!builtin) v.fail("builtin files (" + builtin_names() + ") are for environment maps and bark images only");
+      if (auto why = builtin_problem(s); !why.empty()) v.fail(why);
+      return s;
+    }
     fs::path p(s);
     if (p.is_relative()) p = base_dir / p;
     p = p.lexically_normal();
@@ -130,9 +138,13 @@ LightDesc parse_light(const Ctx& c, JsonObject o) {
   if (type == "environment") {
     if (auto f = o.get("file")) {
       l.type = LightType::EnvironmentMap;
-      l.file = c.resolve(*f);
+      l.file = c.resolve(*f, true, true);
       if (auto v = o.get("intensity")) l.intensity = v->non_negative();
       l.rotation_deg = o.number("rotation_deg", 0.0f);
+      if (auto v = o.get("clamp")) {
+        l.clamp = v->number();
+        if (!(l.clamp > 0)) v->fail("clamp must be > 0 (the largest radiance kept, before intensity)");
+      }
     } else {
       l.type = LightType::EnvironmentUniform;
       l.color = o.color("color", l.color);

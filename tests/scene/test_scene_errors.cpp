@@ -69,7 +69,8 @@ TEST(SceneErrors, DefaultSceneParses) {
   const SceneDesc d = default_scene();
   ASSERT_EQ(d.objects.size(), 2u);
   EXPECT_EQ(d.objects[0].type, ObjectType::Tree);
-  EXPECT_EQ(d.objects[0].tree.branches.size(), 2u);
+  EXPECT_EQ(d.objects[0].tree.branches.size(), 3u);
+  EXPECT_TRUE(d.objects[0].tree.strip_bark);  // simulated bark
 }
 
 TEST(Cli, BadSceneExitsTwoAndLeavesNoOutput) {
