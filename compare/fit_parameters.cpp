@@ -71,7 +71,6 @@ FitSpace strip_fit_space() {
   s.base.strips.params.element_length = 0.01;
   s.base.strips.depth.shape = bark::DepthProfileShape::U;
   s.base.strips.depth.max_depth = 0.02;
-  s.base.strips.relief.enabled = true;
   auto& t = s.table;
   t.push_back(strip_row("strip_width", 0.003, 0.02, true, &SP::strip_width));
   t.push_back(strip_row("growth_rate", 1.0005, 1.003, false, &SP::growth_rate));
@@ -100,16 +99,6 @@ FitSpace strip_fit_space() {
   t.push_back(strip_row("refracture_stiffness", 0.1, 1, false, &SP::refracture_stiffness));
   t.push_back({"depth/depth_per_width", 0.2, 3, true, [](double v, FitCandidate& c) { c.strips.depth.depth_per_width = v; },
                [](const FitCandidate& c) { return c.strips.depth.depth_per_width; }});
-  // The dressing's ridge relief and rough walls (scene key dressing/relief).
-  auto relief_row = [](std::string key, double lo, double hi, bool log, double bark::ReliefLook::*member) {
-    return FitParameter{std::move(key), lo, hi, log, [member](double v, FitCandidate& c) { c.strips.relief.*member = v; },
-                        [member](const FitCandidate& c) { return c.strips.relief.*member; }};
-  };
-  t.push_back(relief_row("dressing/relief/depth_ratio", 0.5, 4, true, &bark::ReliefLook::depth_ratio));
-  t.push_back(relief_row("dressing/relief/shoulder_width", 0.003, 0.03, true, &bark::ReliefLook::shoulder_width));
-  t.push_back(relief_row("dressing/relief/detail", 0, 0.9, false, &bark::ReliefLook::detail));
-  t.push_back(relief_row("dressing/relief/detail_size", 0.002, 0.03, true, &bark::ReliefLook::detail_size));
-  t.push_back(relief_row("dressing/relief/wall_noise", 0, 0.5, false, &bark::ReliefLook::wall_noise));
   // Irregular fissures (strips22's knobs; 0 = the paper's model).
   t.push_back(strip_row("toughness_fraction", 0, 0.9, false, &SP::toughness_fraction));
   t.push_back(strip_row("toughness_size", 0.005, 0.1, true, &SP::toughness_size));
