@@ -3,6 +3,8 @@
 // shoulder, and the defaults that leave every old output as it was.
 #include <gtest/gtest.h>
 
+#include "tests/bark/dressing/cracked_square.h"
+
 #include <cmath>
 #include <set>
 
@@ -129,21 +131,7 @@ TEST(BarkLook, DefaultsLeaveTheShadeAsBefore) {
   EXPECT_EQ(s.memory_bytes(), size_t(64 * 16) * 5 * sizeof(float));
 }
 
-namespace {
-
-// A 10 cm square in z = 0 with one crack edge across it along x = 0.
-CrackedMesh cracked_square() {
-  CrackedMesh c;
-  c.mesh.positions = {{-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0}, {-0.05, 0.05, 0}, {0.0, -0.05, 0}, {0.0, 0.05, 0}};
-  c.mesh.triangles = {{0, 4, 5}, {0, 5, 3}, {4, 1, 2}, {4, 2, 5}};
-  c.crack_edges = {{4, 5}};
-  c.crack_width = {0, 0, 0, 0, 1, 1};
-  c.component = {-1, -1, -1, -1, 0, 0};
-  c.displacement.assign(6, Eigen::Vector3f::Zero());
-  return c;
-}
-
-}  // namespace
+using test::cracked_square;
 
 TEST(BarkLook, StressBarkRoundsDownTowardsTheCrackAndShadesItsRoughness) {
   CrackLook look;

@@ -3,6 +3,8 @@
 // far larger than their cracks, widened by the relaxation's gap (sec. 3.1.6).
 #include <gtest/gtest.h>
 
+#include "tests/bark/dressing/cracked_square.h"
+
 #include <chrono>
 
 #include "bark/dressing/crack_profile.h"
@@ -75,13 +77,7 @@ TEST(CrackProfile, GapWidensByTheVirtualDisplacement) {
   // Sec. 3.1.6: the crack opens by the summed relaxation movement of its vertices. A crack of
   // Algorithm 1 width 1 (half-width 1 mm + 0.5 mm) whose ends moved 10 mm: with gap 0.2 the
   // half-width is 3.5 mm, so a point 2.5 mm off the crack is carved (depth × (1 − 2.5/3.5)).
-  bark::CrackedMesh c;
-  c.mesh.positions = {{-0.05, -0.05, 0}, {0.05, -0.05, 0}, {0.05, 0.05, 0}, {-0.05, 0.05, 0}, {0.0, -0.05, 0}, {0.0, 0.05, 0}};
-  c.mesh.triangles = {{0, 4, 5}, {0, 5, 3}, {4, 1, 2}, {4, 2, 5}};
-  c.crack_edges = {{4, 5}};
-  c.crack_width = {0, 0, 0, 0, 1, 1};
-  c.component = {-1, -1, -1, -1, 0, 0};
-  c.displacement.assign(6, Eigen::Vector3f::Zero());
+  bark::CrackedMesh c = test::cracked_square();
   c.displacement[4] = c.displacement[5] = Eigen::Vector3f(0.006f, 0.008f, 0);  // 10 mm
   CrackLook look;
   look.min_width = 0.001f;
