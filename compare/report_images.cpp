@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "compare/percentile.h"
 #include "io/image_output.h"
 #include "io/png_encode.h"
 
@@ -48,13 +49,9 @@ std::vector<unsigned char> png(const Picture& p) {
 struct Stretch {
   float lo = 0, scale = 1;
   explicit Stretch(const std::vector<float>& z) {
-    if (z.empty()) return;
-    std::vector<float> s = z;
-    const size_t a = s.size() / 100, b = s.size() - 1 - s.size() / 100;
-    std::nth_element(s.begin(), s.begin() + a, s.end());
-    lo = s[a];
-    std::nth_element(s.begin(), s.begin() + b, s.end());
-    scale = s[b] > lo ? 1.0f / (s[b] - lo) : 0.0f;
+    const std::vector<double> p = percentiles(z, {1, 99});
+    lo = float(p[0]);
+    scale = p[1] > p[0] ? float(1.0 / (p[1] - p[0])) : 0.0f;
   }
   float operator()(float z) const { return std::clamp((z - lo) * scale, 0.0f, 1.0f); }
 };
