@@ -1,8 +1,9 @@
 // What `phellem fit` minimizes: a candidate simulated at the evaluation scale, measured, and
-// compared with the photo's statistics: score + orientation EMD / 90°. A candidate the model
-// refuses, or a patch without any relief, scores kFitPenalty.
+// compared with the photo's statistics: score + orientation EMD / 30° + 0.1 per degree of EMD
+// beyond 2°. A candidate the model refuses, or a patch without any relief, scores kFitPenalty.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -12,7 +13,8 @@
 
 namespace phellem {
 
-inline constexpr double kFitPenalty = 2.0;  // above any score + EMD/90 (at most 1 + 1)
+// Above any objective: the score is at most 1 and the EMD at most 90° (1 + 3 + 8.8).
+inline constexpr double kFitPenalty = 16.0;
 
 // The simulation seed of replicate r (0: the search's, the one fitted.json keeps).
 uint64_t fit_simulation_seed(uint64_t seed, int replicate);
@@ -30,6 +32,14 @@ FitScore score_candidate(const FitCandidate& c, const FissureStats& target, cons
 // 3° cost 0.1, as much as the score's same-bark band (at 90 a 3.5° miss cost only 0.04 and
 // the search let it stand).
 inline constexpr double kFitDegreesPerScore = 30.0;
-inline double fit_objective_value(const Comparison& c) { return c.score + c.orientation_emd_deg / kFitDegreesPerScore; }
+// Beyond 2° (the middle of the 1.1–3.1° that two halves of one scan measure, docs/compare.md),
+// each degree costs 0.1 more: with the linear term alone, a pine fit settled at 4.1° for a
+// lower score (0.10), where the halves of the same scan reach 3.1° at most.
+inline constexpr double kFitFreeDegrees = 2.0;
+inline constexpr double kFitExcessPerDegree = 0.1;
+inline double fit_objective_value(const Comparison& c) {
+  const double emd = c.orientation_emd_deg;
+  return c.score + emd / kFitDegreesPerScore + kFitExcessPerDegree * std::max(0.0, emd - kFitFreeDegrees);
+}
 
 }  // namespace phellem

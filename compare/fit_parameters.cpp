@@ -61,6 +61,11 @@ double f32(double v) { return double(float(v)); }
 
 }  // namespace
 
+FitParameter relief_row(std::string key, double lo, double hi, bool log, double bark::ReliefLook::*member) {
+  return {std::move(key), lo, hi, log, [member](double v, FitCandidate& c) { c.strips.relief.*member = v; },
+          [member](const FitCandidate& c) { return c.strips.relief.*member; }};
+}
+
 FitSpace strip_fit_space() {
   FitSpace s;
   s.model = FitModel::strips;
@@ -71,8 +76,14 @@ FitSpace strip_fit_space() {
   s.base.strips.params.element_length = 0.01;
   s.base.strips.depth.shape = bark::DepthProfileShape::U;
   s.base.strips.depth.max_depth = 0.02;
+  // Rough walls and plates that round down to the lips (the dressing's relief without its fbm
+  // detail); depth_ratio 20 is barely any shoulder, wall_noise 0 smooth walls.
+  s.base.strips.relief.enabled = true;
+  s.base.strips.relief.detail = 0;
+  s.base.strips.relief.depth_ratio = 20;
+  s.base.strips.relief.wall_noise = 0;
   auto& t = s.table;
-  t.push_back(strip_row("strip_width", 0.003, 0.02, true, &SP::strip_width));
+  t.push_back(strip_row("strip_width", 0.003, 0.05, true, &SP::strip_width));
   t.push_back(strip_row("growth_rate", 1.0005, 1.003, false, &SP::growth_rate));
   t.push_back(strip_row("location_jitter", 0, 1, false, &SP::location_jitter));
   t.push_back(strip_row("attachment", 0.01, 1, true, &SP::attachment));
@@ -97,6 +108,15 @@ FitSpace strip_fit_space() {
                [](double v, FitCandidate& c) { c.strips.params.refracture_width = v < 0.005 ? 0 : v; },
                [](const FitCandidate& c) { return c.strips.params.refracture_width; }});
   t.push_back(strip_row("refracture_stiffness", 0.1, 1, false, &SP::refracture_stiffness));
+  // Rough fissure walls: the noise breaks the fissure mask into shorter pieces, a strong handle
+  // on the fissure length. Rounded plates: the shoulder is the ridge relief that lowers the
+  // depth ratio without breaking the fissures (fbm detail does break them: compare/fit_relief.h
+  // fits it afterwards, with the geometry fixed).
+  using RL = bark::ReliefLook;
+  t.push_back(relief_row("relief/wall_noise", 0, 0.5, false, &RL::wall_noise));
+  t.push_back(relief_row("relief/wall_size", 0.002, 0.03, true, &RL::wall_size));
+  t.push_back(relief_row("relief/depth_ratio", 0.5, 20, true, &RL::depth_ratio));
+  t.push_back(relief_row("relief/shoulder_width", 0.003, 0.03, true, &RL::shoulder_width));
   t.push_back({"depth/depth_per_width", 0.2, 3, true, [](double v, FitCandidate& c) { c.strips.depth.depth_per_width = v; },
                [](const FitCandidate& c) { return c.strips.depth.depth_per_width; }});
   // Irregular fissures (strips22's knobs; 0 = the paper's model).

@@ -55,6 +55,9 @@ struct FitSpace {
 // are the base's values. Throws std::logic_error for an unknown key.
 FitSpace restrict_space(const FitSpace& s, const std::vector<std::string>& keys);
 
+// A row that sets one member of the strip candidate's relief (bark::ReliefLook).
+FitParameter relief_row(std::string key, double lo, double hi, bool log, double bark::ReliefLook::*member);
+
 FitSpace strip_fit_space();
 FitSpace stress_fit_space();
 FitSpace fit_space(FitModel model);

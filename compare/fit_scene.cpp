@@ -80,10 +80,12 @@ json strip_bark(const StripPatchParams& s, const std::string& preset, uint64_t s
   b["depth"] = {{"profile", profile_name(s.depth.shape)},
                 {"max_depth", s.depth.max_depth},
                 {"depth_per_width", s.depth.depth_per_width}};
-  if (s.relief.enabled)
+  if (s.relief.enabled && s.relief.ridges)
     b["dressing"]["relief"] = {{"depth_ratio", s.relief.depth_ratio}, {"shoulder_width", s.relief.shoulder_width},
                                {"detail", s.relief.detail},           {"detail_size", s.relief.detail_size},
                                {"wall_noise", s.relief.wall_noise},   {"wall_size", s.relief.wall_size}};
+  else if (s.relief.enabled)
+    b["dressing"]["relief"] = {{"ridges", false}, {"wall_noise", s.relief.wall_noise}, {"wall_size", s.relief.wall_size}};
   return b;
 }
 
@@ -111,7 +113,7 @@ json stress_bark(const StressPatchParams& s, const std::string& preset, uint64_t
 
 }  // namespace
 
-std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, uint64_t seed) {
+std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, uint64_t seed, const FitPhotoColours* photo) {
   json scene;
   scene["camera"] = {{"position", {0.0, 1.1, 2.2}}, {"look_at", {0.0, 1.0, 0.0}}, {"fov_deg", 40}};
   scene["render"] = {{"resolution", {960, 640}}, {"spp", 64}, {"max_depth", 6}, {"seed", 11}};
@@ -128,6 +130,8 @@ std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, 
              {"axis", {{0, -0.05, 0}, {0.02, 1.0, 0.01}, {0.0, 2.0, 0.02}}},
              {"radius", {0.3, 0.24, 0.2}},
              {"bark", strip_bark(c.strips, preset, seed)}};
+    if (photo)
+      trunk["bark"]["dressing"]["photo"] = {{"albedo", photo->albedo}, {"height", photo->height}, {"px_per_cm", photo->px_per_cm}};
   } else {
     scene["camera"] = {{"position", {0.0, 0.62, 0.85}}, {"look_at", {0.0, 0.55, 0.0}}, {"fov_deg", 42}};
     trunk = {{"type", "mesh"},
@@ -135,6 +139,8 @@ std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, 
              {"material", "bark"},
              {"procedural", {{"shape", "trunk"}, {"triangles", 7852}, {"radius", 0.16}, {"height", 1.3}}},
              {"bark", stress_bark(c.stress, preset, seed)}};
+    if (photo)
+      trunk["bark"]["crack"]["photo"] = {{"albedo", photo->albedo}, {"height", photo->height}, {"px_per_cm", photo->px_per_cm}};
   }
   scene["objects"] = {trunk, {{"type", "plane"},
                               {"name", "ground"},
@@ -155,8 +161,8 @@ void expect_near(const char* key, double parsed, double fitted) {
 
 }  // namespace
 
-void check_fitted_scene(const std::string& text, const FitCandidate& c) {
-  const SceneDesc d = parse_scene(text, "fitted.json", ".");
+void check_fitted_scene(const std::string& text, const FitCandidate& c, const std::string& base_dir) {
+  const SceneDesc d = parse_scene(text, "fitted.json", base_dir);
   const ObjectDesc* trunk = nullptr;
   for (const ObjectDesc& o : d.objects)
     if (o.name == "trunk") trunk = &o;
@@ -176,6 +182,20 @@ void check_fitted_scene(const std::string& text, const FitCandidate& c) {
     expect_near("weakness_noise", a.weakness_noise, b.weakness_noise);
     expect_near("fracture_stiffness", a.max_fracture_stiffness(), b.max_fracture_stiffness());
     expect_near("depth/depth_per_width", trunk->tree.strip_bark->depth.depth_per_width, c.strips.depth.depth_per_width);
+    const bark::ReliefLook& ra = trunk->tree.strip_bark->relief;
+    const bark::ReliefLook& rb = c.strips.relief;
+    if (ra.enabled != rb.enabled || (rb.enabled && ra.ridges != rb.ridges))
+      throw std::logic_error("fitted.json: the relief parses other than the fit's");
+    if (rb.enabled) {
+      expect_near("relief/wall_noise", ra.wall_noise, rb.wall_noise);
+      expect_near("relief/wall_size", ra.wall_size, rb.wall_size);
+      if (rb.ridges) {
+        expect_near("relief/depth_ratio", ra.depth_ratio, rb.depth_ratio);
+        expect_near("relief/shoulder_width", ra.shoulder_width, rb.shoulder_width);
+        expect_near("relief/detail", ra.detail, rb.detail);
+        expect_near("relief/detail_size", ra.detail_size, rb.detail_size);
+      }
+    }
   } else {
     if (!trunk->stress_bark) throw std::logic_error("fitted.json: the trunk has no stress bark");
     const bark::StressParams& a = trunk->stress_bark->params;

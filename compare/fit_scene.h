@@ -10,11 +10,21 @@
 
 namespace phellem {
 
-// The scene's JSON text: the candidate's parameters in full, the simulation seed `seed`.
-std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, uint64_t seed);
+// The photograph the bark's colours come from (`fit --albedo`): the dressing's `photo` key
+// (scene/bark_photo.h), paths as the scene file will read them (relative to its folder).
+struct FitPhotoColours {
+  std::string albedo, height;
+  double px_per_cm = 0;
+};
 
-// Parses `text` with the scene parser and checks that the bark it describes is the candidate's
-// (to float precision); throws std::logic_error naming the first difference.
-void check_fitted_scene(const std::string& text, const FitCandidate& c);
+// The scene's JSON text: the candidate's parameters in full, the simulation seed `seed`, and
+// the photo's colours when `photo` is given.
+std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, uint64_t seed,
+                              const FitPhotoColours* photo = nullptr);
+
+// Parses `text` (its paths relative to `base_dir`) with the scene parser and checks that the
+// bark it describes is the candidate's (to float precision); throws std::logic_error naming
+// the first difference, and the parser's UserError when it refuses the scene.
+void check_fitted_scene(const std::string& text, const FitCandidate& c, const std::string& base_dir = ".");
 
 }  // namespace phellem

@@ -24,4 +24,11 @@ inline constexpr double kStripPatchMarginM = 0.05;
 // Throws bark::StripParamError for parameters the model refuses.
 HeightField strip_patch(const StripPatchParams& p, const PatchSize& size, uint64_t seed);
 
+// strip_patch in two steps, so that one simulation can be dressed with several reliefs (the
+// fit's relief stage): the simulated, rasterized field with its margin and without relief,
+// then the relief applied to a copy of it and the margin cropped. The relief's noise is seeded
+// from the simulation seed (as a scene seeds it from the bark's).
+bark::FractureField strip_patch_field(const StripPatchParams& p, const PatchSize& size, uint64_t seed);
+HeightField strip_patch_heights(bark::FractureField field, const StripPatchParams& p, const PatchSize& size, uint64_t seed);
+
 }  // namespace phellem

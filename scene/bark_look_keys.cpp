@@ -36,6 +36,7 @@ bark::ReliefLook parse_strip_relief(JsonObject o, uint32_t seed) {
   bark::ReliefLook r;
   r.enabled = true;
   r.seed = seed;
+  r.ridges = o.boolean("ridges", true);
   if (auto v = o.get("depth_ratio")) {
     r.depth_ratio = v->positive();
     if (r.depth_ratio < 0.25 || r.depth_ratio > 20) v->fail("depth_ratio must lie in [0.25, 20] (real bark: about 1 to 2)");

@@ -171,23 +171,28 @@ ReliefResult apply_relief(FractureField& f, const ReliefLook& look, const DepthP
   const int W = f.width, H = f.height;
   const double C = f.circumference, L = f.length;
   const size_t n = size_t(W) * H;
+  if (!look.ridges) {
+    if (look.wall_noise > 0) roughen_walls(f, look);
+    return res;
+  }
   std::vector<size_t> fis, rid;
   classify(f, &fis, &rid);
 
-  roughen_walls(f, look);
-  std::vector<float> detail(n), drop(n);
+  if (look.wall_noise > 0) roughen_walls(f, look);  // × (1 + 0 · n) is the identity
+  std::vector<float> detail(n, 0.0f), drop(n);
+  const bool with_detail = look.detail > 0;  // without, the fbm is multiplied by 0: skip it
   const std::vector<float> dist = fissure_distance(f);
   tbb::parallel_for(0, H, [&](int y) {
     const double s = (y + 0.5) / H * L;
     for (int x = 0; x < W; ++x) {
       const double a = (x + 0.5) / W * C;
       const size_t p = f.index(x, y);
-      detail[p] = tileable_fbm(a, s, look.detail_size, C, 0, look.seed + 2);
+      if (with_detail) detail[p] = tileable_fbm(a, s, look.detail_size, C, 0, look.seed + 2);
       const double t = std::min(1.0, double(dist[p]) / look.shoulder_width);
       drop[p] = float((1 - t) * (1 - t));  // the parabolic shoulder, 1 at the lip
     }
   });
-  standardize(detail, {});
+  if (with_detail) standardize(detail, {});
 
   // The unit ridge relief: shoulder + detail, each with a P90 − P10 of about 1 (0.39 = 1/2.56,
   // the P90 − P10 of a unit normal). The shoulder merges into the fissure wall: the depth is

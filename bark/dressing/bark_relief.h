@@ -21,6 +21,7 @@ namespace phellem::bark {
 
 struct ReliefLook {
   bool enabled = false;           // off: the field's depth is left exactly as rasterized
+  bool ridges = true;             // false: no ridge relief (flat plates), only the rough walls
   double depth_ratio = 1.5;       // target (median ridge − median fissure height) / ridge P90−P10
   double shoulder_width = 0.012;  // m over which a ridge rounds down to the lip
   double detail = 0.4;            // share of the ridge relief that is fbm detail (rest: shoulder)
@@ -52,7 +53,8 @@ struct ReliefResult {
   double ratio = 0;  // the depth ratio reached
 };
 
-// Adds the relief to field.depth (call before dress_colors). Fields without fissures or
+// Adds the relief to field.depth (call before dress_colors). Without `ridges`, only the rough
+// walls, and the result is {0, 0} (no ratio is aimed at or measured). Fields without fissures or
 // ridges get only the walls' noise and the detail at 1/depth_ratio of the profile's max depth.
 // A ratio below what the relief can reach (mostly-shoulder relief on sparse fissures) gives
 // the lowest reachable one: `ratio` reports what was reached.

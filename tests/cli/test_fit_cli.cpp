@@ -5,8 +5,11 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "tests/support/test_util.h"
 
@@ -23,6 +26,29 @@ std::string stripes_png(const std::string& dir) {
     for (int x = 0; x < W; ++x) px[size_t(y) * W + x] = (x % 32) < 5 ? 40 : 200;
   auto out = OIIO::ImageOutput::create(path);
   OIIO::ImageSpec spec(W, H, 1, OIIO::TypeDesc::UINT8);
+  EXPECT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data()) && out->close());
+  return path;
+}
+
+// 256² of V-shaped grooves every 32 px: heights over a continuous range.
+std::string grooves_png(const std::string& dir) {
+  const std::string path = dir + "/grooves.png";
+  const int W = 256, H = 256;
+  std::vector<unsigned char> px(size_t(W) * H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) px[size_t(y) * W + x] = (unsigned char)(40 + 160 * std::min(1.0, std::abs(x % 32 - 16) / 10.0));
+  auto out = OIIO::ImageOutput::create(path);
+  OIIO::ImageSpec spec(W, H, 1, OIIO::TypeDesc::UINT8);
+  EXPECT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data()) && out->close());
+  return path;
+}
+
+// A W×H RGB image of one colour.
+std::string flat_rgb_png(const std::string& path, int W, int H) {
+  std::vector<unsigned char> px(size_t(W) * H * 3);
+  for (size_t i = 0; i < px.size(); i += 3) px[i] = 120, px[i + 1] = 90, px[i + 2] = 60;
+  auto out = OIIO::ImageOutput::create(path);
+  OIIO::ImageSpec spec(W, H, 3, OIIO::TypeDesc::UINT8);
   EXPECT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, px.data()) && out->close());
   return path;
 }
@@ -76,6 +102,47 @@ TEST(FitCli, UnwritableOutputFolderIsFoundBeforeAnyWork) {
   expect_error("fit " + missing + " --scale 10 --model strips -o " + d + "/no/such/dir", d + "/no/such/dir: -o: ");
   std::filesystem::create_directories(d + "/out/report.json");  // an output name taken by a folder
   expect_error("fit " + missing + " --scale 10 --model strips -o " + d + "/out", d + "/out/report.json: -o: is a folder");
+}
+
+TEST(FitCli, AlbedoMistakesAreFoundBeforeAnyWork) {
+  const std::string d = test::temp_dir("fit_cli_albedo");
+  const std::string img = stripes_png(d), fit = "fit " + img + " --scale 10 --model strips -o " + d + "/out --albedo ";
+  expect_error(fit + d + "/missing.jpg", d + "/missing.jpg: ");
+  const std::string small = flat_rgb_png(d + "/small.png", 128, 256);
+  expect_error(fit + small, small + ": --albedo A: the albedo is 128×256 pixels but its height map");
+  // Two height levels only: the dressing cannot tell ridges from fissures between its
+  // percentiles. Refused at once (not after the search), at --albedo.
+  const std::string albedo = flat_rgb_png(d + "/albedo.png", 256, 256);
+  const auto t0 = std::chrono::steady_clock::now();
+  expect_error(fit + albedo + " --time-budget 600", albedo + ": --albedo: the height map " + img + " is flat between its percentiles");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 30.0);
+  EXPECT_FALSE(std::filesystem::exists(d + "/out"));
+}
+
+// With --albedo the fitted scene takes its colours from the photo (the dressing's `photo`
+// key, absolute paths), it renders from anywhere, and the report measures the photo's colours.
+TEST(FitCli, AlbedoColoursTheFittedScene) {
+  const std::string d = test::temp_dir("fit_cli_albedo_run");
+  const std::string img = grooves_png(d), albedo = flat_rgb_png(d + "/albedo.png", 256, 256);
+  const auto r = test::run_phellem("fit " + img + " --scale 10 --model strips -o " + d + "/out --albedo " + albedo +
+                                   " --max-evals 6 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto scene = nlohmann::json::parse(test::read_text(d + "/out/fitted.json"));
+  nlohmann::json photo;
+  for (const auto& o : scene["objects"])
+    if (o["name"] == "trunk") photo = o["bark"]["dressing"]["photo"];
+  ASSERT_TRUE(photo.is_object()) << scene.dump(1);
+  EXPECT_EQ(photo["albedo"], std::filesystem::absolute(albedo).lexically_normal().string());
+  EXPECT_EQ(photo["height"], std::filesystem::absolute(img).lexically_normal().string());
+  EXPECT_DOUBLE_EQ(photo["px_per_cm"].get<double>(), 10.0);
+  const auto report = nlohmann::json::parse(test::read_text(d + "/out/report.json"));
+  ASSERT_TRUE(report["inputs"]["A"]["statistics"].contains("colour_L_mean")) << report["inputs"]["A"].dump(1);
+  EXPECT_FALSE(report["inputs"]["B"]["statistics"].contains("colour_L_mean"));
+  // The scene parses from another working directory (the paths are absolute).
+  const std::string moved = test::temp_dir("fit_cli_albedo_moved") + "/fitted.json";
+  std::filesystem::copy_file(d + "/out/fitted.json", moved);
+  const auto check = test::run_phellem("render " + moved + " --memory-estimate");
+  EXPECT_EQ(check.exit_code, 0) << check.output;
 }
 
 }  // namespace phellem

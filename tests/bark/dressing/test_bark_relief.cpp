@@ -144,6 +144,31 @@ TEST(BarkRelief, OffLeavesTheFieldBitIdentical) {
   EXPECT_EQ(r.scale, 0.0);
 }
 
+TEST(BarkRelief, WithoutRidgesOnlyTheWallsChange) {
+  const FractureField f0 = one_fracture();
+  ReliefLook l = look(1.0, 0.6, 0.2);
+  l.ridges = false;
+  FractureField f = f0, walls = f0;
+  const ReliefResult r = apply_relief(f, l, DepthProfile{});
+  roughen_walls(walls, l);
+  EXPECT_EQ(f.depth, walls.depth);  // exactly the rough walls: no shoulder, no detail
+  EXPECT_NE(f.depth, f0.depth);
+  EXPECT_EQ(r.scale, 0.0);
+  for (size_t p = 0; p < f.depth.size(); ++p)
+    if (f0.depth[p] <= 0) ASSERT_EQ(f.depth[p], 0.0f) << p;  // the plates stay flat
+}
+
+TEST(BarkRelief, NoDetailAndNoWallNoiseSkipTheirNoiseExactly) {
+  // detail 0 and wall_noise 0 multiply their fbm by 0: skipping it must not change a bit.
+  FractureField a = one_fracture(), b = one_fracture();
+  ReliefLook l = look(1.5, 0.0, 0.0);
+  apply_relief(a, l, DepthProfile{});
+  l.detail = 1e-60;  // computes the fbm, whose contribution rounds to 0 in float
+  l.wall_noise = 1e-60;
+  apply_relief(b, l, DepthProfile{});
+  EXPECT_EQ(a.depth, b.depth);
+}
+
 TEST(BarkRelief, FissureDistanceIsEuclideanAndPeriodic) {
   FractureField f = one_fracture();
   const std::vector<float> d = fissure_distance(f);
