@@ -53,10 +53,12 @@ double mean_circumference(const bark::StripModel& model) {
   return C;
 }
 
-// Field size for texels 1/`texels_per_strip` of a strip wide at the final size, at least
+// Field size for texels 1/`texels_per_strip` of a strip wide at the final size, and at most
+// `max_texel` m (wide strips, as fits choose, keep narrow fissures sharp), at least
 // min_w × min_h and at most max × max.
-void automatic_size(const bark::StripModel& model, int texels_per_strip, int min_w, int min_h, int max, int* W, int* H) {
-  const double texel = model.domain().strip_width / texels_per_strip;
+void automatic_size(const bark::StripModel& model, int texels_per_strip, double max_texel, int min_w, int min_h, int max, int* W,
+                    int* H) {
+  const double texel = std::min(max_texel, model.domain().strip_width / texels_per_strip);
   // Final extent along the strips and across them; strips along the axis swap the two.
   const double along = mean_circumference(model) / model.scale_at_step(model.steps_done()), across = model.domain().length;
   const bool axial = model.domain().along_axis;
@@ -72,8 +74,9 @@ bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
     W = desc_->field_width;
     H = desc_->field_height;
   }
-  // Texels a quarter of a strip wide: fracture edges stay sharp in close-ups.
-  if (W <= 0 || H <= 0) automatic_size(model, 4, 64, 16, 8192, &W, &H);
+  // Texels a quarter of a strip wide and at most 1.25 mm (a quarter of the presets' 5 mm
+  // strips): fracture edges stay sharp in close-ups.
+  if (W <= 0 || H <= 0) automatic_size(model, 4, 0.00125, 64, 16, 8192, &W, &H);
   bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
   bark::apply_relief(f, desc_->relief, desc_->depth);
   // Circumference of the epidermis when it formed: the texture's period around (UV0 × C0).
@@ -87,7 +90,7 @@ bark::FractureField TreeStripSimulation::field(size_t k, int W, int H) const {
 
 GlbMesh TreeStripSimulation::mesh(size_t k, int W, int H) const {
   const bark::StripModel& model = sim_->model(k);
-  if (W <= 0 || H <= 0) automatic_size(model, 2, 32, 8, 4096, &W, &H);
+  if (W <= 0 || H <= 0) automatic_size(model, 2, 0.0025, 32, 8, 4096, &W, &H);
   const bark::FractureField f = bark::rasterize(model, W, H, desc_->depth);
   const bark::FractureMesh fm = bark::mesh_fracture_field(f, desc_->depth.max_depth);
   const bark::GeneralizedCylinder& cyl = *parts_[k].cylinder;

@@ -165,6 +165,10 @@ void roughen_walls(FractureField& f, const ReliefLook& look) {
   for (size_t p : inside) f.depth[p] = std::max(0.0f, f.depth[p] * (1.0f + float(look.wall_noise) * wall[p]));
 }
 
+namespace {
+constexpr double kMaxReliefPerDepth = 2.0;
+}  // namespace
+
 ReliefResult apply_relief(FractureField& f, const ReliefLook& look, const DepthProfile& profile) {
   ReliefResult res;
   if (!look.enabled || f.width <= 0 || f.height <= 0) return res;
@@ -215,7 +219,9 @@ ReliefResult apply_relief(FractureField& f, const ReliefLook& look, const DepthP
   double k = profile.max_depth / look.depth_ratio;
   if (!fs.empty() && !rs.empty()) {
     // The ratio falls as the relief grows (fissure depth / ridge spread): geometric bisection.
-    double lo = 1e-6 * profile.max_depth, hi = 20 * profile.max_depth;
+    // At most twice the deepest fissure: a ratio out of reach must not raise ridges by
+    // decimetres (kMaxReliefPerDepth).
+    double lo = 1e-6 * profile.max_depth, hi = kMaxReliefPerDepth * profile.max_depth;
     if (ratio_at(hi) >= look.depth_ratio) {
       k = hi;
     } else {

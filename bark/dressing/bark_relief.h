@@ -56,8 +56,9 @@ struct ReliefResult {
 // Adds the relief to field.depth (call before dress_colors). Without `ridges`, only the rough
 // walls, and the result is {0, 0} (no ratio is aimed at or measured). Fields without fissures or
 // ridges get only the walls' noise and the detail at 1/depth_ratio of the profile's max depth.
-// A ratio below what the relief can reach (mostly-shoulder relief on sparse fissures) gives
-// the lowest reachable one: `ratio` reports what was reached.
+// A ratio below what the relief can reach (mostly-shoulder relief on sparse fissures, or a
+// relief amplitude above twice the profile's max depth) gives the lowest reachable one:
+// `ratio` reports what was reached.
 ReliefResult apply_relief(FractureField& field, const ReliefLook& look, const DepthProfile& profile);
 
 }  // namespace phellem::bark

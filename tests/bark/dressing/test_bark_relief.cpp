@@ -154,8 +154,11 @@ TEST(BarkRelief, WithoutRidgesOnlyTheWallsChange) {
   EXPECT_EQ(f.depth, walls.depth);  // exactly the rough walls: no shoulder, no detail
   EXPECT_NE(f.depth, f0.depth);
   EXPECT_EQ(r.scale, 0.0);
-  for (size_t p = 0; p < f.depth.size(); ++p)
-    if (f0.depth[p] <= 0) ASSERT_EQ(f.depth[p], 0.0f) << p;  // the plates stay flat
+  for (size_t p = 0; p < f.depth.size(); ++p) {
+    if (f0.depth[p] <= 0) {
+      ASSERT_EQ(f.depth[p], 0.0f) << p;  // the plates stay flat
+    }
+  }
 }
 
 TEST(BarkRelief, NoDetailAndNoWallNoiseSkipTheirNoiseExactly) {
