@@ -1,7 +1,12 @@
 // The fit's relief stage on a geometry already fitted: reads a `phellem fit` report.json's
 // parameters, rebuilds the candidate, and runs compare/fit_relief on the photo at the
-// evaluation scale (PHELLEM_DEBUG_RELIEF=1 prints every relief candidate).
+// evaluation scale, printing what it found and its time.
 //   phellem_bench_fit_relief PHOTO PX_PER_CM REPORT_JSON [MAX_EVALS] [SEEDS]
+// Other modes (docs/fit.md):
+//   RELIEF_GRID=1   a 36-point grid of reliefs (depth_ratio × detail × shoulder_width) instead,
+//                   every statistic printed;
+//   SCALE_CHECK=1   the fitted candidate (with its fitted relief) scored at 5 and at 10 px/cm
+//                   per seed; DEPTH_SHAPE=u|v|r and MAX_DEPTH=M override its depth profile.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
