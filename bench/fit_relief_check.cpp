@@ -45,14 +45,8 @@ int main(int argc, char** argv) {
     FitCandidate g = c;
     const auto& rel = report["fit"]["relief"];
     if (rel.value("ridges", false)) {
-      const auto& q = rel["parameters"];
       g.strips.relief.ridges = true;
-      g.strips.relief.depth_ratio = q["depth_ratio"];
-      g.strips.relief.shoulder_width = q["shoulder_width"];
-      g.strips.relief.detail = q["detail"];
-      g.strips.relief.detail_size = q["detail_size"];
-      g.strips.relief.wall_noise = q["wall_noise"];
-      if (q.contains("wall_size")) g.strips.relief.wall_size = q["wall_size"];
+      for (const FitParameter& row : relief_fit_rows()) row.apply(rel["parameters"][row.key].get<double>(), g);
     }
     if (const char* v = std::getenv("DEPTH_SHAPE")) g.strips.depth.shape = v[0] == 'v' ? bark::DepthProfileShape::V : v[0] == 'r' ? bark::DepthProfileShape::Round : bark::DepthProfileShape::U;
     if (const char* v = std::getenv("MAX_DEPTH")) g.strips.depth.max_depth = std::atof(v);

@@ -45,8 +45,7 @@ constexpr int kReliefSeeds = 4;
 constexpr int kReliefMaxEvals = 80;
 
 // The photo as a height field at one scale (its own: --scale, or what the file states).
-HeightField load_photo(const cli::Options& o) {
-  HeightImage img = read_height_image(o.scene);
+HeightField photo_field(const cli::Options& o, const HeightImage& img) {
   double sx = img.px_per_cm_x, sy = img.px_per_cm_y;
   if (o.scale) sx = sy = *o.scale;
   if (!(sx > 0) || !(sy > 0)) throw UserError(o.scene, "--scale", "this image states no scale: give it in pixels per cm");
@@ -54,7 +53,7 @@ HeightField load_photo(const cli::Options& o) {
   f.width = img.width;
   f.height = img.height;
   f.px_per_cm = sx;
-  f.z = std::move(img.z);
+  f.z = img.z;
   if (sx != sy) f = resample(f, sx, sy, std::min(sx, sy));
   return f;
 }
@@ -72,10 +71,11 @@ int run_fit(const cli::Options& o) {
   const std::string fitted = (dir / "fitted.json").string(), patch_path = (dir / "patch.exr").string();
   for (const std::string& f : {fitted, patch_path, (dir / "report.html").string(), (dir / "report.json").string()})
     out.expect_file("-o", f);
-  const HeightField photo = load_photo(o);
+  HeightImage photo_image = read_height_image(o.scene);
+  const HeightField photo = photo_field(o, photo_image);
   // The photo as `phellem compare` reads it (with its albedo: a missing, unreadable or
   // mismatched one is refused here, before any work).
-  const LoadedInput photo_in = load_input(CompareSource{"A", o.scene, o.scale, o.albedo});
+  const LoadedInput photo_in = load_input(CompareSource{"A", o.scene, o.scale, o.albedo}, std::move(photo_image));
   const double s_eval = std::min(kEvalPxPerCm, photo.px_per_cm);
   const HeightField photo_eval = s_eval < photo.px_per_cm ? resample(photo, photo.px_per_cm, photo.px_per_cm, s_eval) : photo;
   const FissureAnalysis target = analyse_fissures(photo_eval, nullptr, o.scene);

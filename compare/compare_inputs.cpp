@@ -24,10 +24,12 @@ const char* kind_name(HeightImage::Kind k) {
 
 }  // namespace
 
-LoadedInput load_input(const CompareSource& source) {
+LoadedInput load_input(const CompareSource& source) { return load_input(source, read_height_image(source.path)); }
+
+LoadedInput load_input(const CompareSource& source, HeightImage image) {
   LoadedInput in;
   in.source = source;
-  in.image = read_height_image(source.path);
+  in.image = std::move(image);
   if (source.px_per_cm) {
     in.px_per_cm_x = in.px_per_cm_y = *source.px_per_cm;
   } else if (in.image.px_per_cm_x > 0 && in.image.px_per_cm_y > 0) {

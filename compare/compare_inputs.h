@@ -30,6 +30,8 @@ struct LoadedInput {
 // Reads the height (and albedo) and resolves the scale. UserError when a plain image or a
 // render has no --scale, or the albedo's size differs from the height map's.
 LoadedInput load_input(const CompareSource& source);
+// The same for a height image already read from source.path.
+LoadedInput load_input(const CompareSource& source, HeightImage image);
 
 // An input at one isotropic scale (never finer than its own: the caller picks the coarser).
 struct PreparedInput {
