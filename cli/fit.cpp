@@ -43,6 +43,11 @@ constexpr int kSeedsPerEvaluation = 4;
 constexpr double kReliefShare = 0.1;
 constexpr int kReliefSeeds = 4;
 constexpr int kReliefMaxEvals = 80;
+// The fissures' lean is all but measured on the photo (its mean orientation): the strip fit
+// searches the spiral within this many degrees of the lean it measures, which is at most
+// kMaxLeanDeg (a photo held askew by more is the user's to rotate).
+constexpr double kSpiralSearchDeg = 4;
+constexpr double kMaxLeanDeg = 12;
 
 // The photo as a height field at one scale (its own: --scale, or what the file states).
 HeightField photo_field(const cli::Options& o, const HeightImage& img) {
@@ -81,7 +86,12 @@ int run_fit(const cli::Options& o) {
   const FissureAnalysis target = analyse_fissures(photo_eval, nullptr, o.scene);
   const PatchSize eval_size{photo_eval.width, photo_eval.height, photo_eval.px_per_cm};
 
-  const FitSpace space = fit_space(model_of(o.model));
+  FitSpace space = fit_space(model_of(o.model));
+  if (space.model == FitModel::strips) {
+    // Mean orientation above 90° (image y down): the fissures lean left going up, θ falls.
+    const double lean = std::clamp(90.0 - target.stats.orientation_mean_deg, -kMaxLeanDeg, kMaxLeanDeg);
+    narrow_row(space, "spiral_deg", lean, kSpiralSearchDeg);
+  }
   // With --albedo, the bark takes its colours from the photo (absolute paths: fitted.json
   // renders from wherever it is moved on this machine). The dressing reads the photo now, on
   // the start's scene, so that a photo it cannot use is refused before the search.

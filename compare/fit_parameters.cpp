@@ -104,6 +104,8 @@ FitSpace strip_fit_space() {
   t.push_back(strip_row("influence", 0, 1, false, &SP::influence));
   t.push_back(strip_row("propagation_tension", 0.1, 1, false, &SP::propagation_tension));
   t.push_back(strip_row("propagation_jitter_deg", 0, 45, false, &SP::propagation_jitter_deg));
+  // Spiral grain, or a photo held a little askew: either leans the fissures off the vertical.
+  t.push_back(strip_row("spiral_deg", -12, 12, false, &SP::spiral_deg));
   t.push_back({"refracture_width", 0, 0.1, false,
                [](double v, FitCandidate& c) { c.strips.params.refracture_width = v < 0.005 ? 0 : v; },
                [](const FitCandidate& c) { return c.strips.params.refracture_width; }});
@@ -217,6 +219,15 @@ FitSpace restrict_space(const FitSpace& s, const std::vector<std::string>& keys)
   for (const FitParameter& row : r.table) x.push_back(row.normalized(row.read(r.base)));
   r.starts = {x};
   return r;
+}
+
+void narrow_row(FitSpace& s, const std::string& key, double centre, double half_width) {
+  const auto row = std::find_if(s.table.begin(), s.table.end(), [&](const FitParameter& r) { return r.key == key; });
+  if (row == s.table.end() || row->log || !(half_width > 0)) throw std::logic_error("narrow_row: unknown or log-mapped key");
+  row->lo = centre - half_width;
+  row->hi = centre + half_width;
+  const size_t i = size_t(row - s.table.begin());
+  for (std::vector<double>& x : s.starts) x[i] = 0.5;
 }
 
 FitSpace fit_space(FitModel model) { return model == FitModel::strips ? strip_fit_space() : stress_fit_space(); }

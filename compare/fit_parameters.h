@@ -55,6 +55,11 @@ struct FitSpace {
 // are the base's values. Throws std::logic_error for an unknown key.
 FitSpace restrict_space(const FitSpace& s, const std::vector<std::string>& keys);
 
+// The linear row `key` searched over [centre − half_width, centre + half_width] instead of its
+// own range, every start at the centre: for a parameter the photo all but measures (the
+// fissures' lean, spiral_deg). Throws std::logic_error for an unknown or log-mapped key.
+void narrow_row(FitSpace& s, const std::string& key, double centre, double half_width);
+
 // A row that sets one member of the strip candidate's relief (bark::ReliefLook).
 FitParameter relief_row(std::string key, double lo, double hi, bool log, double bark::ReliefLook::*member);
 

@@ -65,6 +65,7 @@ json strip_bark(const StripPatchParams& s, const std::string& preset, uint64_t s
   b["influence"] = p.influence;
   b["propagation_jitter_deg"] = p.propagation_jitter_deg;
   b["propagation_tension"] = p.propagation_tension;
+  b["spiral_deg"] = p.spiral_deg;
   b["opening"] = {{"axis", p.opening_mix.x()}, {"one_side", p.opening_mix.y()}, {"both", p.opening_mix.z()}};
   b["refracture_width"] = p.refracture_width;
   b["refracture_stiffness"] = p.refracture_stiffness;
@@ -178,6 +179,7 @@ void check_fitted_scene(const std::string& text, const FitCandidate& c, const st
     expect_near("threshold_noise", a.threshold_noise, b.threshold_noise);
     expect_near("inglis_threshold", a.inglis_threshold, b.inglis_threshold);
     expect_near("propagation_jitter_deg", a.propagation_jitter_deg, b.propagation_jitter_deg);
+    expect_near("spiral_deg", a.spiral_deg, b.spiral_deg);
     expect_near("toughness_fraction", a.toughness_fraction, b.toughness_fraction);
     expect_near("weakness_noise", a.weakness_noise, b.weakness_noise);
     expect_near("fracture_stiffness", a.max_fracture_stiffness(), b.max_fracture_stiffness());

@@ -113,6 +113,7 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint64
   if (auto v = o.get("inglis_threshold")) p.inglis_threshold = v->positive();
   if (auto v = o.get("influence")) p.influence = v->non_negative();
   if (auto v = o.get("propagation_jitter_deg")) p.propagation_jitter_deg = v->number();
+  if (auto v = o.get("spiral_deg")) p.spiral_deg = v->number();
   if (auto v = o.get("propagation_tension")) p.propagation_tension = v->number();
   if (auto v = o.get("toughness_fraction")) p.toughness_fraction = v->number();
   if (auto v = o.get("toughness_size")) p.toughness_size = v->number();

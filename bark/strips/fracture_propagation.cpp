@@ -139,7 +139,7 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
   side.lands = false;
   if (!side.advances) return;
   // Base direction: parallel to the nearest fracture of the target strip whose influence
-  // reaches the tip; otherwise along the axis.
+  // reaches the tip; otherwise along the grain (the axis, or the spiral_deg helix).
   double best = kNone;
   size_t nearest = SIZE_MAX;
   const size_t reach = std::min<size_t>(ne, 2 * kInfluenceElements + 1);
@@ -154,7 +154,11 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
   }
   // The influencing fracture's own direction, from its element back in our strip, if it
   // continues there (and is still a fracture there).
-  double base_slope = 0;  // dθ/ds of the influencing fracture (radians per metre)
+  const double radius = st.circumference / kTwoPi;
+  // dθ/ds (radians per metre). The spiral's: the growth still to come stretches the bark
+  // around the trunk, not along it, so a tip takes the slope that lands at spiral_deg on the
+  // grown trunk (radius / scale): dθ/ds = tan(spiral) / final radius.
+  double base_slope = std::tan(params_.spiral_deg * kPi / 180.0) * scale_at_step(step_) / radius;
   if (nearest != SIZE_MAX) {
     const int32_t back = side.up ? st.elements[nearest].down : st.elements[nearest].up;
     if (back >= 0) {
@@ -164,7 +168,6 @@ void StripModel::aim(size_t j, PropagationSide& side) const {
     }
   }
   // Jitter the direction by the user angle (sec. 3.2.4); slopes in arc length on the target.
-  const double radius = st.circumference / kTwoPi;
   // tan(atan(t) + b) = (t + tan b) / (1 - t tan b): the jittered slope without the atan.
   const double ta = base_slope * radius, tb = std::tan(side.jitter);
   const double dtheta = (ta + tb) / (1.0 - ta * tb) * ws / radius * (side.up ? 1.0 : -1.0);

@@ -116,6 +116,7 @@ std::optional<StripParamError> validate(const StripParams& p) {
   if (!(p.influence >= 0) || !std::isfinite(p.influence)) return err("influence", "must be >= 0");
   if (!(p.propagation_jitter_deg >= 0 && p.propagation_jitter_deg < 90))
     return err("propagation_jitter_deg", "must be in [0, 90)");
+  if (!(p.spiral_deg >= -45 && p.spiral_deg <= 45)) return err("spiral_deg", "must be in [-45, 45]");
   if (!(p.propagation_tension >= 0 && p.propagation_tension <= 1)) return err("propagation_tension", "must be in [0, 1]");
   if (!(p.toughness_fraction >= 0 && p.toughness_fraction < 1)) return err("toughness_fraction", "must be in [0, 1)");
   if (!(p.anastomosis >= 0 && p.anastomosis <= 1)) return err("anastomosis", "must be in [0, 1]");

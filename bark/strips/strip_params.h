@@ -75,6 +75,12 @@ struct StripParams {
   // least this fraction of the element's own threshold strain. Inglis' iso-strain curves run
   // parallel to a fracture, so tips do not cut into bark another fracture has relaxed.
   double propagation_tension = 0.5;
+  // Spiral grain (our extension, issue 22): a tip with no neighbouring fracture to follow
+  // propagates along a helix at this angle to the axis on the grown trunk instead of along the
+  // axis (the base direction that the jitter above perturbs), so the fissures wind round the
+  // trunk as on spiral-grained trees (pines: commonly a few degrees). Positive: θ increases
+  // upwards. In [-45, 45]; 0 is the paper.
+  double spiral_deg = 0;
   // Irregular fissures (our extension, issue 22; every knob at 0 leaves the paper's model
   // unchanged bit for bit). Real bark's fissures have varying lengths, fork, meet and
   // interlace (anastomose) and are irregularly spaced; the paper's tips run on while the

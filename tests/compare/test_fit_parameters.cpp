@@ -52,3 +52,17 @@ TEST(FitParameters, EveryStressCandidateIsValid) {
     ASSERT_FALSE(e) << e->key << ": " << e->message;
   }
 }
+
+TEST(FitParameters, NarrowRowSearchesAroundTheMeasuredValue) {
+  FitSpace s = strip_fit_space();
+  narrow_row(s, "spiral_deg", -5, 4);
+  size_t i = 0;
+  while (s.table[i].key != "spiral_deg") ++i;
+  EXPECT_DOUBLE_EQ(s.table[i].lo, -9);
+  EXPECT_DOUBLE_EQ(s.table[i].hi, -1);
+  for (const auto& x : s.starts) EXPECT_NEAR(s.candidate(x).strips.params.spiral_deg, -5, 1e-6);
+  std::vector<double> corner(s.dimension(), 1.0);
+  EXPECT_NEAR(s.candidate(corner).strips.params.spiral_deg, -1, 1e-6);
+  EXPECT_THROW(narrow_row(s, "no_such_key", 0, 1), std::logic_error);
+  EXPECT_THROW(narrow_row(s, "strip_width", 0.01, 0.005), std::logic_error);  // log-mapped
+}
