@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <tbb/parallel_for.h>
 
 #include "cli/fit_report.h"
 #include "compare/common_scale.h"
@@ -28,20 +29,29 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Candidates are simulated and measured at this scale at most: the statistics are lengths in
-// cm measured at the common scale, so a coarser evaluation affords more evaluations
+// The search simulates and measures candidates at this scale at most: the statistics are
+// lengths in cm measured at the common scale, so a coarser evaluation affords more evaluations
 // (bench/fit_eval; docs/compare.md has the figures).
 constexpr double kEvalPxPerCm = 5.0;
+// But the coarse scale hides detail that the report, at the photo's scale, sees: a pine
+// candidate with rough walls 4 mm across scored 0.03–0.06 at 5 px/cm and 0.15–0.18 at 10,
+// where its walls read as more fissures (spacing 3.9 cm against 4.7). So the search's best
+// kChoicePoints distinct points are scored again on the whole photo at its scale (at most
+// kFinalPxPerCm) on kFinalSeeds seeds, the lowest wins, and the relief stage runs at that
+// scale too. (Searching at 10 px/cm on a 512² patch instead was too noisy: one candidate's
+// mean over 4 seeds ranged 0.14–0.38.)
+constexpr double kFinalPxPerCm = 10.0;
+constexpr int kChoicePoints = 6;
+constexpr int kFinalSeeds = 2;
 constexpr double kDefaultTimeBudgetS = 600;
 // Each evaluation is the mean over this many simulation seeds: one realization's statistics
 // vary by about ±0.04 in score, and a search on few seeds picks lucky realizations (measured
 // on bark_brown_01 with 1 seed: the best point scored 0.19–0.26 over three seeds; on the pine
 // scan with 2: 0.18–0.37). With 4 the pine fit reached 0.104 where 2 reached 0.137.
 constexpr int kSeedsPerEvaluation = 4;
-// The relief stage (compare/fit_relief.h): its share of the time budget, its seeds and its
-// evaluations without a budget.
+// The relief stage (compare/fit_relief.h, on kFinalSeeds seeds at the photo's scale): its share
+// of the time budget and its evaluations without a budget.
 constexpr double kReliefShare = 0.1;
-constexpr int kReliefSeeds = 4;
 constexpr int kReliefMaxEvals = 80;
 // The fissures' lean is all but measured on the photo (its mean orientation): the strip fit
 // searches the spiral within this many degrees of the lean it measures, which is at most
@@ -85,6 +95,10 @@ int run_fit(const cli::Options& o) {
   const HeightField photo_eval = s_eval < photo.px_per_cm ? resample(photo, photo.px_per_cm, photo.px_per_cm, s_eval) : photo;
   const FissureAnalysis target = analyse_fissures(photo_eval, nullptr, o.scene);
   const PatchSize eval_size{photo_eval.width, photo_eval.height, photo_eval.px_per_cm};
+  const double s_final = std::min(kFinalPxPerCm, photo.px_per_cm);
+  const HeightField photo_final = s_final < photo.px_per_cm ? resample(photo, photo.px_per_cm, photo.px_per_cm, s_final) : photo;
+  const FissureAnalysis target_final = s_final == s_eval ? target : analyse_fissures(photo_final, nullptr, o.scene);
+  const PatchSize final_size{photo_final.width, photo_final.height, photo_final.px_per_cm};
 
   FitSpace space = fit_space(model_of(o.model));
   if (space.model == FitModel::strips) {
@@ -115,7 +129,10 @@ int run_fit(const cli::Options& o) {
   // Keep back time for the relief stage, the final patch at the photo's scale and the outputs.
   const bool relief_stage = space.model == FitModel::strips;
   const double relief_budget = relief_stage && so.time_budget_s > 0 ? std::clamp(kReliefShare * so.time_budget_s, 5.0, 120.0) : 0.0;
-  if (so.time_budget_s > 0) so.time_budget_s = std::max(1.0, so.time_budget_s - since(t0) - 15.0 - relief_budget);
+  // The choice at the photo's scale: about 1.5 s per simulation at 1024², 10 px/cm.
+  const double choice_budget = 0.8 * kChoicePoints * kFinalSeeds * double(final_size.width) * final_size.height / (1024.0 * 1024.0);
+  if (so.time_budget_s > 0)
+    so.time_budget_s = std::max(1.0, so.time_budget_s - since(t0) - 15.0 - relief_budget - choice_budget);
   const bool timed = so.max_evals == 0;
   Progress bar("fit", timed ? (long long)(so.time_budget_s * 10) : so.max_evals, !o.quiet);
   const auto search_start = Clock::now();
@@ -140,22 +157,51 @@ int run_fit(const cli::Options& o) {
       });
   bar.finish();
 
-  // Stage 2: the ridge relief, on the best geometry.
-  FitCandidate best = space.candidate(r.x);
+  // The choice at the photo's scale among the search's best distinct points.
+  std::vector<const FitEvaluation*> ranked;
+  for (const FitEvaluation& e : r.history)
+    if (e.replicate == 0) ranked.push_back(&e);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const FitEvaluation* a, const FitEvaluation* b) { return a->f < b->f; });
+  std::vector<std::vector<double>> choices{r.x};
+  for (const FitEvaluation* e : ranked) {
+    if (int(choices.size()) >= kChoicePoints) break;
+    if (std::find(choices.begin(), choices.end(), e->x) == choices.end()) choices.push_back(e->x);
+  }
+  std::vector<uint64_t> final_seeds;
+  for (int k = 0; k < kFinalSeeds; ++k) final_seeds.push_back(fit_simulation_seed(seed, k));
+  std::vector<double> choice_f(choices.size() * final_seeds.size());
+  if (!o.quiet)
+    std::fprintf(stderr, "phellem: fit: the best %zu points again at %g px/cm (%zu seeds)\n", choices.size(), s_final, final_seeds.size());
+  tbb::parallel_for(size_t(0), choice_f.size(), [&](size_t i) {
+    const FitCandidate c = space.candidate(choices[i / final_seeds.size()]);
+    choice_f[i] = score_candidate(c, target_final.stats, final_size, final_seeds[i % final_seeds.size()]).f;
+  });
+  size_t chosen = 0;
+  std::vector<double> choice_mean(choices.size(), 0.0);
+  for (size_t i = 0; i < choice_f.size(); ++i) choice_mean[i / final_seeds.size()] += choice_f[i] / double(final_seeds.size());
+  for (size_t k = 1; k < choices.size(); ++k)
+    if (choice_mean[k] < choice_mean[chosen]) chosen = k;
+  const std::vector<double>& x_best = choices[chosen];
+  const nlohmann::json choice_json = {{"px_per_cm", s_final},          {"points", choices.size()},
+                                      {"seeds", final_seeds.size()},   {"objectives", choice_mean},
+                                      {"chosen", chosen},              {"search_best_objective", choice_mean[0]}};
+
+  // Stage 2: the ridge relief, on the chosen geometry, at the photo's scale.
+  FitCandidate best = space.candidate(x_best);
   nlohmann::json relief_json = {{"fitted", false}};
   if (relief_stage) {
     std::vector<uint64_t> seeds;
-    for (int k = 0; k < kReliefSeeds; ++k) seeds.push_back(fit_simulation_seed(seed, k));
+    for (int k = 0; k < kFinalSeeds; ++k) seeds.push_back(fit_simulation_seed(seed, k));
     ReliefFitOptions ro;
     ro.max_evals = o.max_evals ? std::max(1, int(*o.max_evals / 10)) : kReliefMaxEvals;
     ro.time_budget_s = relief_budget;
     if (!o.quiet)
-      std::fprintf(stderr, "phellem: fit: the ridge relief on the best fissures (%d seeds, %d candidates at most%s)\n", kReliefSeeds,
+      std::fprintf(stderr, "phellem: fit: the ridge relief on the best fissures (%d seeds, %d candidates at most%s)\n", kFinalSeeds,
                    ro.max_evals, relief_budget > 0 ? (", " + std::to_string(int(relief_budget)) + " s").c_str() : "");
-    const ReliefFitResult rr = fit_relief(best.strips, target.stats, eval_size, seeds, ro);
+    const ReliefFitResult rr = fit_relief(best.strips, target_final.stats, final_size, seeds, ro);
     best.strips.relief = rr.look;
     relief_json = {{"fitted", true},   {"ridges", rr.look.enabled && rr.look.ridges}, {"objective_without", rr.f_off},
-                   {"objective", rr.f}, {"evaluations", rr.evaluations}, {"seeds", kReliefSeeds}};
+                   {"objective", rr.f}, {"evaluations", rr.evaluations}, {"seeds", kFinalSeeds}};
     if (rr.look.enabled && rr.look.ridges)
       for (const FitParameter& row : relief_fit_rows()) relief_json["parameters"][row.key] = row.read(best);
   }
@@ -173,7 +219,7 @@ int run_fit(const cli::Options& o) {
   patch_in.image.px_per_cm_x = patch_in.image.px_per_cm_y = patch_in.px_per_cm_x = patch_in.px_per_cm_y = patch.px_per_cm;
   const CompareReport report = compare_inputs(photo_in, patch_in);
   nlohmann::json params;
-  const std::vector<double> values = space.values(r.x);
+  const std::vector<double> values = space.values(x_best);
   for (size_t i = 0; i < space.table.size(); ++i) params[space.table[i].key] = values[i];
   const nlohmann::json fit = {{"model", o.model},
              {"seed", seed},
@@ -182,6 +228,7 @@ int run_fit(const cli::Options& o) {
              {"time_budget_stopped", r.budget_stopped},
              {"objective", {{"mean", r.f}, {"min", r.f_min}, {"max", r.f_max}, {"seeds", r.replicates}}},
              {"eval_px_per_cm", s_eval},
+             {"choice", choice_json},
              {"parameters", params},
              {"relief", relief_json},
              {"wall_s", since(t0)}};

@@ -119,6 +119,23 @@ FitSpace strip_fit_space() {
   t.push_back(relief_row("relief/wall_size", 0.002, 0.03, true, &RL::wall_size));
   t.push_back(relief_row("relief/depth_ratio", 0.5, 20, true, &RL::depth_ratio));
   t.push_back(relief_row("relief/shoulder_width", 0.003, 0.03, true, &RL::shoulder_width));
+  // The fissures' cross-section, from a cusp through V (1) and U (2) towards a box: V fissures
+  // measure narrower and less wide-spread in the mask than U ones of the same opening.
+  t.push_back({"depth/exponent", 0.5, 4, true,
+               [](double v, FitCandidate& c) {
+                 c.strips.depth.shape = bark::DepthProfileShape::Power;
+                 c.strips.depth.exponent = v;
+               },
+               [](const FitCandidate& c) {
+                 switch (c.strips.depth.shape) {
+                   case bark::DepthProfileShape::V:
+                     return 1.0;
+                   case bark::DepthProfileShape::Power:
+                     return c.strips.depth.exponent;
+                   default:
+                     return 2.0;
+                 }
+               }});
   t.push_back({"depth/depth_per_width", 0.2, 3, true, [](double v, FitCandidate& c) { c.strips.depth.depth_per_width = v; },
                [](const FitCandidate& c) { return c.strips.depth.depth_per_width; }});
   // Irregular fissures (strips22's knobs; 0 = the paper's model).

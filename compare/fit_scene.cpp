@@ -22,6 +22,8 @@ const char* profile_name(bark::DepthProfileShape s) {
       return "box";
     case bark::DepthProfileShape::Round:
       return "round";
+    case bark::DepthProfileShape::Power:
+      return "power";
   }
   return "u";
 }
@@ -81,6 +83,7 @@ json strip_bark(const StripPatchParams& s, const std::string& preset, uint64_t s
   b["depth"] = {{"profile", profile_name(s.depth.shape)},
                 {"max_depth", s.depth.max_depth},
                 {"depth_per_width", s.depth.depth_per_width}};
+  if (s.depth.shape == bark::DepthProfileShape::Power) b["depth"]["exponent"] = s.depth.exponent;
   if (s.relief.enabled && s.relief.ridges)
     b["dressing"]["relief"] = {{"depth_ratio", s.relief.depth_ratio}, {"shoulder_width", s.relief.shoulder_width},
                                {"detail", s.relief.detail},           {"detail_size", s.relief.detail_size},
@@ -184,6 +187,9 @@ void check_fitted_scene(const std::string& text, const FitCandidate& c, const st
     expect_near("weakness_noise", a.weakness_noise, b.weakness_noise);
     expect_near("fracture_stiffness", a.max_fracture_stiffness(), b.max_fracture_stiffness());
     expect_near("depth/depth_per_width", trunk->tree.strip_bark->depth.depth_per_width, c.strips.depth.depth_per_width);
+    if (trunk->tree.strip_bark->depth.shape != c.strips.depth.shape) throw std::logic_error("fitted.json: the depth profile parses other than the fit's");
+    if (c.strips.depth.shape == bark::DepthProfileShape::Power)
+      expect_near("depth/exponent", trunk->tree.strip_bark->depth.exponent, c.strips.depth.exponent);
     const bark::ReliefLook& ra = trunk->tree.strip_bark->relief;
     const bark::ReliefLook& rb = c.strips.relief;
     if (ra.enabled != rb.enabled || (rb.enabled && ra.ridges != rb.ridges))

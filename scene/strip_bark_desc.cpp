@@ -172,8 +172,15 @@ StripBarkDesc parse_strip_bark(JsonObject o, const std::string& base_dir, uint64
       d.depth.shape = bark::DepthProfileShape::Box;
     else if (shape == "round")
       d.depth.shape = bark::DepthProfileShape::Round;
+    else if (shape == "power")
+      d.depth.shape = bark::DepthProfileShape::Power;
     else
-      m.fail("profile", "unknown depth profile \"" + shape + "\"; allowed: v, u, box, round");
+      m.fail("profile", "unknown depth profile \"" + shape + "\"; allowed: v, u, box, round, power");
+    if (auto w = m.get("exponent")) {
+      if (d.depth.shape != bark::DepthProfileShape::Power) w->fail("exponent applies to the \"power\" profile only");
+      d.depth.exponent = w->number();
+      if (!(d.depth.exponent >= 0.25 && d.depth.exponent <= 8)) w->fail("must be in [0.25, 8]");
+    }
     if (auto w = m.get("max_depth")) d.depth.max_depth = w->positive();
     if (auto w = m.get("depth_per_width")) d.depth.depth_per_width = w->positive();
     m.finish();

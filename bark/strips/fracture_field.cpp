@@ -36,6 +36,8 @@ double DepthProfile::evaluate(double q) const {
       return q > 0.05 ? 1.0 : q / 0.05;
     case DepthProfileShape::Round:
       return std::sqrt(std::max(0.0, 1.0 - (1.0 - q) * (1.0 - q)));
+    case DepthProfileShape::Power:
+      return 1.0 - std::pow(1.0 - q, exponent);
   }
   return q;
 }

@@ -17,9 +17,12 @@ namespace phellem::bark {
 
 // Normalized depth profile across a fracture (papers' Figure 14 / 2001 Figure 8): depth at
 // normalized distance q from the lip (0) to the axis (1), in [0, 1].
-enum class DepthProfileShape { V, U, Box, Round };
+// Power: 1 − (1 − q)^exponent, the family between them (1 = V, 2 = U; below 1 a narrow
+// cusp at the axis, above 2 towards a box), so a fit can search the shape continuously.
+enum class DepthProfileShape { V, U, Box, Round, Power };
 struct DepthProfile {
   DepthProfileShape shape = DepthProfileShape::U;
+  double exponent = 2;  // Power only, in [0.25, 8]
   double depth_per_width = 0.6;  // depth grows with width ...
   double max_depth = 0.02;       // ... up to this (m)
   double evaluate(double q) const;

@@ -49,6 +49,21 @@ TEST(StripBarkValues, SizesMustBePositive) {
   }
 }
 
+TEST(StripBarkValues, SpiralAndPowerProfileRanges) {
+  expect_refused("spiral_deg", "46", "must be in [-45, 45]");
+  expect_refused("spiral_deg", "-90", "must be in [-45, 45]");
+  EXPECT_EQ(error_of(R"("spiral_deg": -45)"), "<no error>");
+  auto depth = [](const std::string& inner) { return error_of(R"("depth": {)" + inner + "}"); };
+  EXPECT_EQ(depth(R"("profile": "power", "exponent": 0.25)"), "<no error>");
+  EXPECT_EQ(depth(R"("profile": "power", "exponent": 8)"), "<no error>");
+  for (const char* bad : {"0.2", "9", "-1"}) {
+    const std::string msg = depth(std::string(R"("profile": "power", "exponent": )") + bad);
+    EXPECT_NE(msg.find("scene.json: /objects/0/bark/depth/exponent: must be in [0.25, 8]"), std::string::npos) << msg;
+  }
+  const std::string msg = depth(R"("profile": "u", "exponent": 2)");
+  EXPECT_NE(msg.find("/objects/0/bark/depth/exponent: exponent applies to the \"power\" profile only"), std::string::npos) << msg;
+}
+
 TEST(StripBarkValues, WeaknessNoiseWidensTheThresholdBound) {
   // sec. 3.2.3's lower bound on S holds for the weakest jittered threshold, which the noise
   // lowers: a noise that takes it below the bound is an error naming the threshold.

@@ -29,3 +29,21 @@ TEST(FractureFieldTest, TileableSampleWrapsWithoutSeam) {
   EXPECT_LT(col_diff(f.width - 1, 0), 3 * cols);
   EXPECT_LT(row_diff(f.height - 1, 0), 3 * rows);
 }
+
+// The power profile 1 − (1 − q)^k is V at k = 1 and U at k = 2, and keeps the ends fixed
+// (0 at the lip, 1 at the axis) for every exponent.
+TEST(FractureFieldTest, PowerProfileSpansVAndU) {
+  DepthProfile v{DepthProfileShape::V}, u{DepthProfileShape::U}, p{DepthProfileShape::Power};
+  for (double q = 0; q <= 1.0; q += 0.125) {
+    p.exponent = 1;
+    EXPECT_DOUBLE_EQ(p.evaluate(q), v.evaluate(q)) << q;
+    p.exponent = 2;
+    EXPECT_NEAR(p.evaluate(q), u.evaluate(q), 1e-15) << q;
+  }
+  for (double k : {0.25, 0.5, 3.0, 8.0}) {
+    p.exponent = k;
+    EXPECT_DOUBLE_EQ(p.evaluate(0), 0.0) << k;
+    EXPECT_DOUBLE_EQ(p.evaluate(1), 1.0) << k;
+    EXPECT_NEAR(p.evaluate(0.5), 1 - std::pow(0.5, k), 1e-15) << k;
+  }
+}
