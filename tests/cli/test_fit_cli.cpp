@@ -138,6 +138,19 @@ TEST(FitCli, AlbedoColoursTheFittedScene) {
   const auto report = nlohmann::json::parse(test::read_text(d + "/out/report.json"));
   ASSERT_TRUE(report["inputs"]["A"]["statistics"].contains("colour_L_mean")) << report["inputs"]["A"].dump(1);
   EXPECT_FALSE(report["inputs"]["B"]["statistics"].contains("colour_L_mean"));
+  // The choice at the photo's scale: the lowest of the points scored again wins.
+  const auto& choice = report["fit"]["choice"];
+  EXPECT_DOUBLE_EQ(choice["px_per_cm"].get<double>(), 10.0);
+  const auto objectives = choice["objectives"].get<std::vector<double>>();
+  ASSERT_FALSE(objectives.empty());
+  EXPECT_EQ(choice["chosen"].get<size_t>(), size_t(std::min_element(objectives.begin(), objectives.end()) - objectives.begin()));
+  // Vertical grooves lean 0°: the spiral is searched within 4° of it.
+  EXPECT_LE(std::abs(report["fit"]["parameters"]["spiral_deg"].get<double>()), 4.0 + 1e-6);
+  for (const auto& o : scene["objects"])
+    if (o["name"] == "trunk") {
+      EXPECT_EQ(o["bark"]["depth"]["profile"], "power");
+      EXPECT_NEAR(o["bark"]["depth"]["exponent"].get<double>(), report["fit"]["parameters"]["depth/exponent"].get<double>(), 1e-6);
+    }
   // The scene parses from another working directory (the paths are absolute).
   const std::string moved = test::temp_dir("fit_cli_albedo_moved") + "/fitted.json";
   std::filesystem::copy_file(d + "/out/fitted.json", moved);
