@@ -129,8 +129,10 @@ int run_fit(const cli::Options& o) {
   // Keep back time for the relief stage, the final patch at the photo's scale and the outputs.
   const bool relief_stage = space.model == FitModel::strips;
   const double relief_budget = relief_stage && so.time_budget_s > 0 ? std::clamp(kReliefShare * so.time_budget_s, 5.0, 120.0) : 0.0;
-  // The choice at the photo's scale: about 1.5 s per simulation at 1024², 10 px/cm.
-  const double choice_budget = 0.8 * kChoicePoints * kFinalSeeds * double(final_size.width) * final_size.height / (1024.0 * 1024.0);
+  // The choice at the photo's scale (strips only: a stress patch at 1024², 10 px/cm takes
+  // 20 s): about 1.5 s per simulation at 1024², 10 px/cm, two at a time.
+  const int choice_points = space.model == FitModel::strips ? kChoicePoints : 1;
+  const double choice_budget = choice_points == 1 ? 0.0 : 0.8 * kChoicePoints * kFinalSeeds * double(final_size.width) * final_size.height / (1024.0 * 1024.0);
   if (so.time_budget_s > 0)
     so.time_budget_s = std::max(1.0, so.time_budget_s - since(t0) - 15.0 - relief_budget - choice_budget);
   const bool timed = so.max_evals == 0;
@@ -164,27 +166,28 @@ int run_fit(const cli::Options& o) {
   std::stable_sort(ranked.begin(), ranked.end(), [](const FitEvaluation* a, const FitEvaluation* b) { return a->f < b->f; });
   std::vector<std::vector<double>> choices{r.x};
   for (const FitEvaluation* e : ranked) {
-    if (int(choices.size()) >= kChoicePoints) break;
+    if (int(choices.size()) >= choice_points) break;
     if (std::find(choices.begin(), choices.end(), e->x) == choices.end()) choices.push_back(e->x);
   }
   std::vector<uint64_t> final_seeds;
   for (int k = 0; k < kFinalSeeds; ++k) final_seeds.push_back(fit_simulation_seed(seed, k));
-  std::vector<double> choice_f(choices.size() * final_seeds.size());
-  if (!o.quiet)
+  std::vector<double> choice_f(choices.size() > 1 ? choices.size() * final_seeds.size() : 0);
+  if (!o.quiet && !choice_f.empty())
     std::fprintf(stderr, "phellem: fit: the best %zu points again at %g px/cm (%zu seeds)\n", choices.size(), s_final, final_seeds.size());
   tbb::parallel_for(size_t(0), choice_f.size(), [&](size_t i) {
     const FitCandidate c = space.candidate(choices[i / final_seeds.size()]);
     choice_f[i] = score_candidate(c, target_final.stats, final_size, final_seeds[i % final_seeds.size()]).f;
   });
   size_t chosen = 0;
-  std::vector<double> choice_mean(choices.size(), 0.0);
+  std::vector<double> choice_mean(choice_f.empty() ? 0 : choices.size(), 0.0);
   for (size_t i = 0; i < choice_f.size(); ++i) choice_mean[i / final_seeds.size()] += choice_f[i] / double(final_seeds.size());
-  for (size_t k = 1; k < choices.size(); ++k)
+  for (size_t k = 1; k < choice_mean.size(); ++k)
     if (choice_mean[k] < choice_mean[chosen]) chosen = k;
   const std::vector<double>& x_best = choices[chosen];
-  const nlohmann::json choice_json = {{"px_per_cm", s_final},          {"points", choices.size()},
-                                      {"seeds", final_seeds.size()},   {"objectives", choice_mean},
-                                      {"chosen", chosen},              {"search_best_objective", choice_mean[0]}};
+  nlohmann::json choice_json = {{"points", choice_mean.size()}};  // 0: no choice (the search's winner)
+  if (!choice_mean.empty())
+    choice_json = {{"px_per_cm", s_final},        {"points", choices.size()}, {"seeds", final_seeds.size()},
+                   {"objectives", choice_mean}, {"chosen", chosen},         {"search_best_objective", choice_mean[0]}};
 
   // Stage 2: the ridge relief, on the chosen geometry, at the photo's scale.
   FitCandidate best = space.candidate(x_best);
