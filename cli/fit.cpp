@@ -171,37 +171,34 @@ int run_fit(const cli::Options& o) {
   }
   std::vector<uint64_t> final_seeds;
   for (int k = 0; k < kFinalSeeds; ++k) final_seeds.push_back(fit_simulation_seed(seed, k));
-  std::vector<double> choice_f(choices.size() > 1 ? choices.size() * final_seeds.size() : 0);
-  if (!o.quiet && !choice_f.empty())
-    std::fprintf(stderr, "phellem: fit: the best %zu points again at %g px/cm (%zu seeds)\n", choices.size(), s_final, final_seeds.size());
-  tbb::parallel_for(size_t(0), choice_f.size(), [&](size_t i) {
-    const FitCandidate c = space.candidate(choices[i / final_seeds.size()]);
-    choice_f[i] = score_candidate(c, target_final.stats, final_size, final_seeds[i % final_seeds.size()]).f;
-  });
   size_t chosen = 0;
-  std::vector<double> choice_mean(choice_f.empty() ? 0 : choices.size(), 0.0);
-  for (size_t i = 0; i < choice_f.size(); ++i) choice_mean[i / final_seeds.size()] += choice_f[i] / double(final_seeds.size());
-  for (size_t k = 1; k < choice_mean.size(); ++k)
-    if (choice_mean[k] < choice_mean[chosen]) chosen = k;
+  nlohmann::json choice_json = {{"points", 0}};  // no choice: the search's winner
+  if (choices.size() > 1) {
+    const size_t ns = final_seeds.size();
+    if (!o.quiet) std::fprintf(stderr, "phellem: fit: the best %zu points again at %g px/cm (%zu seeds)\n", choices.size(), s_final, ns);
+    std::vector<double> f(choices.size() * ns);
+    tbb::parallel_for(size_t(0), f.size(), [&](size_t i) {
+      f[i] = score_candidate(space.candidate(choices[i / ns]), target_final.stats, final_size, final_seeds[i % ns]).f;
+    });
+    std::vector<double> mean(choices.size(), 0.0);
+    for (size_t i = 0; i < f.size(); ++i) mean[i / ns] += f[i] / double(ns);
+    chosen = size_t(std::min_element(mean.begin(), mean.end()) - mean.begin());
+    choice_json = {{"px_per_cm", s_final}, {"points", choices.size()}, {"seeds", ns},
+                   {"objectives", mean},   {"chosen", chosen},         {"search_best_objective", mean[0]}};
+  }
   const std::vector<double>& x_best = choices[chosen];
-  nlohmann::json choice_json = {{"points", choice_mean.size()}};  // 0: no choice (the search's winner)
-  if (!choice_mean.empty())
-    choice_json = {{"px_per_cm", s_final},        {"points", choices.size()}, {"seeds", final_seeds.size()},
-                   {"objectives", choice_mean}, {"chosen", chosen},         {"search_best_objective", choice_mean[0]}};
 
   // Stage 2: the ridge relief, on the chosen geometry, at the photo's scale.
   FitCandidate best = space.candidate(x_best);
   nlohmann::json relief_json = {{"fitted", false}};
   if (relief_stage) {
-    std::vector<uint64_t> seeds;
-    for (int k = 0; k < kFinalSeeds; ++k) seeds.push_back(fit_simulation_seed(seed, k));
     ReliefFitOptions ro;
     ro.max_evals = o.max_evals ? std::max(1, int(*o.max_evals / 10)) : kReliefMaxEvals;
     ro.time_budget_s = relief_budget;
     if (!o.quiet)
       std::fprintf(stderr, "phellem: fit: the ridge relief on the best fissures (%d seeds, %d candidates at most%s)\n", kFinalSeeds,
                    ro.max_evals, relief_budget > 0 ? (", " + std::to_string(int(relief_budget)) + " s").c_str() : "");
-    const ReliefFitResult rr = fit_relief(best.strips, target_final.stats, final_size, seeds, ro);
+    const ReliefFitResult rr = fit_relief(best.strips, target_final.stats, final_size, final_seeds, ro);
     best.strips.relief = rr.look;
     relief_json = {{"fitted", true},   {"ridges", rr.look.enabled && rr.look.ridges}, {"objective_without", rr.f_off},
                    {"objective", rr.f}, {"evaluations", rr.evaluations}, {"seeds", kFinalSeeds}};

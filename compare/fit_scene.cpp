@@ -115,6 +115,9 @@ json stress_bark(const StressPatchParams& s, const std::string& preset, uint64_t
   return b;
 }
 
+// The `photo` key of the strip dressing and of the stress crack look alike.
+json photo_key(const FitPhotoColours& p) { return {{"albedo", p.albedo}, {"height", p.height}, {"px_per_cm", p.px_per_cm}}; }
+
 }  // namespace
 
 std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, uint64_t seed, const FitPhotoColours* photo) {
@@ -135,7 +138,7 @@ std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, 
              {"radius", {0.3, 0.24, 0.2}},
              {"bark", strip_bark(c.strips, preset, seed)}};
     if (photo)
-      trunk["bark"]["dressing"]["photo"] = {{"albedo", photo->albedo}, {"height", photo->height}, {"px_per_cm", photo->px_per_cm}};
+      trunk["bark"]["dressing"]["photo"] = photo_key(*photo);
   } else {
     scene["camera"] = {{"position", {0.0, 0.62, 0.85}}, {"look_at", {0.0, 0.55, 0.0}}, {"fov_deg", 42}};
     trunk = {{"type", "mesh"},
@@ -144,7 +147,7 @@ std::string fitted_scene_json(const FitCandidate& c, const std::string& preset, 
              {"procedural", {{"shape", "trunk"}, {"triangles", 7852}, {"radius", 0.16}, {"height", 1.3}}},
              {"bark", stress_bark(c.stress, preset, seed)}};
     if (photo)
-      trunk["bark"]["crack"]["photo"] = {{"albedo", photo->albedo}, {"height", photo->height}, {"px_per_cm", photo->px_per_cm}};
+      trunk["bark"]["crack"]["photo"] = photo_key(*photo);
   }
   scene["objects"] = {trunk, {{"type", "plane"},
                               {"name", "ground"},
