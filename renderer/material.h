@@ -25,7 +25,7 @@ struct ShadingInput {
   float footprint;                       // texture filter width in uv units
   bool primary = true;                   // camera-ray hit: full-quality (bicubic) texture filtering
   const Color* base_override = nullptr;  // dressed bark albedo replacing the base colour
-  float base_scale = 1.0f;               // multiplies the base colour (crack depth darkening)
+  Color base_scale = Color::Ones();      // multiplies the base colour (crack depth darkening, bark tint)
   float roughness_override = -1;         // the bark's own roughness replacing the material's (< 0: none)
 };
 

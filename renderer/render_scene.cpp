@@ -270,7 +270,7 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   hit->crack_mask = hit->crack_depth = 0;
   hit->displacement = 0;
   hit->bark = false;
-  hit->albedo_scale = 1.0f;
+  hit->albedo_scale = Color::Ones();
   hit->bark_roughness = -1;
   if (shape->sphere) {
     const Vec3f n = (hit->p - shape->center).normalized();
@@ -305,13 +305,13 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   if (!m.displacement.empty())
     hit->displacement = w * m.displacement[idx[0]] + u * m.displacement[idx[1]] + v * m.displacement[idx[2]];
   if (shape->bark && !m.params.empty()) {
-    const Vec2f q = w * m.params[idx[0]] + u * m.params[idx[1]] + v * m.params[idx[2]];
-    const bark::BarkShade sh = shape->bark->shade(q);
+    const Vec4f q = w * m.params[idx[0]] + u * m.params[idx[1]] + v * m.params[idx[2]];
+    const bark::BarkShade sh = shape->bark->shade(q, w * p0 + u * p1 + v * p2);
     hit->bark = sh.replaces_albedo;
     hit->crack_mask = sh.mask;
     hit->crack_depth = sh.depth;
     hit->bark_albedo = Color(sh.albedo.x(), sh.albedo.y(), sh.albedo.z());
-    hit->albedo_scale = sh.albedo_scale;
+    hit->albedo_scale = sh.albedo_scale * Color(sh.tint.x(), sh.tint.y(), sh.tint.z());
     hit->bark_roughness = sh.roughness;
   }
   if (!m.tangents.empty())

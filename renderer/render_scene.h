@@ -43,7 +43,7 @@ struct SurfaceHit {
   float displacement = 0;
   bool bark = false;
   Color bark_albedo = Color::Zero();
-  float albedo_scale = 1.0f;
+  Color albedo_scale = Color::Ones();  // per channel: depth darkening × the bark's tint
   float bark_roughness = -1;  // the bark's own roughness here (< 0: the material's)
 };
 

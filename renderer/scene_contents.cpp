@@ -74,7 +74,7 @@ DicingJob stress_job(const SceneDesc& desc, const ObjectDesc& o, const bark::Cra
   // it reaches everywhere, so the dicing is then uniform.
   const bool extra = o.type == ObjectType::Mesh && o.displacement.type != DisplacementDesc::Type::None;
   const DisplacementFn own = extra ? make_displacement(o.displacement) : DisplacementFn{};
-  j.bark_disp = [surface, own](const Vec2f& uv, const Vec3f& p, const Vec3f& n, Vec2f* params) {
+  j.bark_disp = [surface, own](const Vec2f& uv, const Vec3f& p, const Vec3f& n, Vec4f* params) {
     bark::SurfacePoint sp;
     sp.position = p;
     sp.normal = n;

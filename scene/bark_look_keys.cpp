@@ -61,4 +61,19 @@ void parse_crack_relief(JsonObject o, CrackLook* l) {
   o.finish();
 }
 
+void parse_crack_variation(JsonObject o, CrackLook* l) {
+  // A grey ramp of 9 tints from 1 − v to 1 + v (bark/dressing/bark_tints.h); 0 takes the
+  // variation away.
+  auto ramp = [](float v) {
+    std::vector<Eigen::Vector3f> r;
+    for (int i = 0; v > 0 && i < 9; ++i) r.push_back(Eigen::Vector3f::Constant(1 - v + 2 * v * float(i) / 8));
+    return r;
+  };
+  if (o.has("ridge")) l->ridge_tints = ramp(unit_interval(o, "ridge", 0));
+  if (o.has("fissure")) l->fissure_tints = ramp(unit_interval(o, "fissure", 0));
+  l->tint_size = positive(o, "size", l->tint_size);
+  if (!(l->tint_size >= 1e-4f && l->tint_size <= 10)) o.fail("size", "size must lie in [0.0001, 10] m (a plate's size)");
+  o.finish();
+}
+
 }  // namespace phellem

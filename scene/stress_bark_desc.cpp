@@ -150,13 +150,22 @@ StressBarkDesc parse_stress_bark(JsonObject o, const std::string& base_dir, uint
     }
     if (auto w = m.get("gap")) l.gap = w->non_negative();
     if (auto w = m.get("relief")) parse_crack_relief(w->object(), &l);
-    if (auto w = m.get("roughness")) l.roughness = parse_bark_roughness(w->object(), uint32_t(p.seed ^ (p.seed >> 32)) + 7);
+    if (auto w = m.get("roughness")) {
+      JsonObject r = w->object();
+      if (r.has("noise_size"))
+        r.fail("noise_size", "stress bark's roughness varies per plate and per crack: its size is crack.variation.size");
+      l.roughness = parse_bark_roughness(std::move(r), uint32_t(p.seed ^ (p.seed >> 32)) + 7);
+    }
+    // A photo first: explicit variation below overrides its tints.
     if (auto w = m.get("photo")) {
       const BarkPhoto ph = read_bark_photo(w->object(), base_dir);
       l.colored = true;
       l.ridge_color = ph.ridge;
       l.fissure_color = ph.fissure;
+      l.ridge_tints = ph.ridge_tints;
+      l.fissure_tints = ph.fissure_tints;
     }
+    if (auto w = m.get("variation")) parse_crack_variation(w->object(), &l);
     if (l.min_width > l.max_width) {
       char what[160];
       std::snprintf(what, sizeof what, "min_width (%g m) must not exceed max_width (%g m%s)", l.min_width, l.max_width,

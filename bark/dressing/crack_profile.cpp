@@ -18,9 +18,12 @@ CrackProfile::CrackProfile(const bark::CrackedMesh& c, const CrackLook& look, ui
     const float gap = v < c.displacement.size() ? look.gap * c.displacement[v].norm() : 0.0f;  // sec. 3.1.6
     return std::clamp(look.min_width + look.width_per_edge * c.crack_width[v] + gap, look.min_width, look.max_width);
   };
-  for (const auto& e : c.crack_edges)
-    seg_.push_back(
-        {c.mesh.positions[e[0]].cast<float>(), c.mesh.positions[e[1]].cast<float>(), half_width(e[0]), half_width(e[1])});
+  const std::vector<float> chain = chain_coordinates(c, seed);
+  for (size_t i = 0; i < c.crack_edges.size(); ++i) {
+    const auto& e = c.crack_edges[i];
+    seg_.push_back({c.mesh.positions[e[0]].cast<float>(), c.mesh.positions[e[1]].cast<float>(), half_width(e[0]),
+                    half_width(e[1]), chain[i]});
+  }
   reach_ = look.max_width * (1 + look.noise) + look.shoulder_width;
   cell_ = std::max(reach_, 1e-4f);
   for (uint32_t i = 0; i < seg_.size(); ++i) {
@@ -39,6 +42,28 @@ CrackProfile::CrackProfile(const bark::CrackedMesh& c, const CrackLook& look, ui
     triangles_.emplace_back(p(t[0]), p(t[1]), p(t[2]));
   }
   tree_ = std::make_unique<Tree>(triangles_.begin(), triangles_.end());
+}
+
+std::vector<float> CrackProfile::chain_coordinates(const bark::CrackedMesh& c, uint32_t seed) {
+  // Union the two edges at every vertex of degree 2; junctions (3 or more) and ends split chains.
+  const size_t n = c.crack_edges.size();
+  std::unordered_map<uint32_t, std::vector<uint32_t>> at;
+  for (uint32_t i = 0; i < n; ++i)
+    for (uint32_t v : c.crack_edges[i]) at[v].push_back(i);
+  std::vector<uint32_t> parent(n);
+  for (uint32_t i = 0; i < n; ++i) parent[i] = i;
+  auto find = [&](uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& [v, edges] : at)
+    if (edges.size() == 2) {
+      const uint32_t a = find(edges[0]), b = find(edges[1]);
+      parent[std::max(a, b)] = std::min(a, b);  // the root is the chain's first edge
+    }
+  std::vector<float> coord(n);
+  for (uint32_t i = 0; i < n; ++i) coord[i] = lattice_hash01(find(i), 0, seed ^ 0x6c8e9cf5u, 0, 0);
+  return coord;
 }
 
 int64_t CrackProfile::cell_key(int x, int y, int z) const {
@@ -92,7 +117,10 @@ CrackProfile::Sample CrackProfile::at(const Vec3f& p, const Vec3f& n) const {
     off -= off.dot(n) * n;  // distance across the surface
     const float d = off.norm();
     const float w = ((1 - t) * g.wa + t * g.wb) * mod_w;
-    outside = std::min(outside, d - w);
+    if (d - w < outside) {
+      outside = d - w;
+      s.chain = g.chain;
+    }
     if (d >= w) return false;
     const float depth = std::min(look_.max_depth, look_.depth_per_width * w) * mod_d * (1 - d / w);
     if (depth > s.depth) s.depth = depth;

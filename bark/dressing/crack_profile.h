@@ -47,6 +47,12 @@ struct CrackLook {
   // scene/bark_photo.h), darkened with depth. Off unless `colored`.
   bool colored = false;
   Eigen::Vector3f ridge_color{0.5f, 0.5f, 0.5f}, fissure_color{0.3f, 0.3f, 0.3f};
+  // Per-crack and per-plate colour variation (bark/dressing/bark_tints.h; empty: none): each
+  // crack chain (between junctions and ends) picks a fissure tint, the ridges a ridge tint
+  // from a field of feature size tint_size (m). Tints multiply the colours above, or the
+  // material's base colour, and the roughness noise follows them.
+  std::vector<Eigen::Vector3f> ridge_tints, fissure_tints;
+  float tint_size = 0.04f;
 };
 
 class CrackProfile {
@@ -57,6 +63,7 @@ class CrackProfile {
     float depth = 0;     // metres below the surface (≥ 0)
     float relative = 0;  // depth / the look's max_depth, in [0, 1] (the crack AOV, darkening)
     float mask = 0;      // 1 inside a crack's width
+    float chain = 0;     // the nearest crack chain's coordinate in [0, 1) (its tint; also outside it)
   };
   // At a point of the undisplaced surface with unit normal n (outwards).
   Sample at(const Vec3f& p, const Vec3f& n) const;
@@ -69,7 +76,10 @@ class CrackProfile {
   struct Segment {
     Vec3f a, b;
     float wa, wb;  // half-widths at the ends (m), before noise
+    float chain;   // coordinate of the chain (edges between junctions and ends) it belongs to
   };
+  // Every edge's chain coordinate: a hash of the chain's first edge.
+  static std::vector<float> chain_coordinates(const bark::CrackedMesh& mesh, uint32_t seed);
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Triangles = std::vector<K::Triangle_3>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;

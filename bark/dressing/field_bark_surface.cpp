@@ -38,11 +38,11 @@ float FieldBarkSurface::depth(double u, double v) const {
 BarkDisplacement FieldBarkSurface::displace(const SurfacePoint& p) const {
   BarkDisplacement d;
   d.offset = -depth(p.param.x(), p.param.y());
-  d.attributes = p.param.cast<float>();
+  d.attributes << p.param.cast<float>(), 0, 0;
   return d;
 }
 
-BarkShade FieldBarkSurface::shade(const Eigen::Vector2f& uv) const { return shade_at(uv.x(), uv.y()); }
+BarkShade FieldBarkSurface::shade(const Eigen::Vector4f& uv, const Eigen::Vector3f&) const { return shade_at(uv.x(), uv.y()); }
 
 BarkShade FieldBarkSurface::shade_at(double u, double v) const {
   BarkShade s;

@@ -21,7 +21,7 @@ class FieldBarkSurface final : public BarkSurface {
   // Inwards by the fracture depth at the point's (u, v); the attributes are (u, v) itself.
   BarkDisplacement displace(const SurfacePoint& p) const override;
   // The dressed field at (u, v) = attributes: its albedo replaces the material's.
-  BarkShade shade(const Eigen::Vector2f& uv) const override;
+  BarkShade shade(const Eigen::Vector4f& uv, const Eigen::Vector3f& position) const override;
   bool reaches(const Eigen::Vector3f&, const Eigen::Vector3f&) const override { return !texels_.empty(); }
 
   // Metres below the epidermis at (u, v).

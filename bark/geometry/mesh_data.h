@@ -13,7 +13,7 @@ struct MeshData {
   std::vector<Vec3f> normals;       // #V or empty (then the geometric normal shades)
   std::vector<Vec2f> uvs;           // #V or empty
   std::vector<Vec4f> tangents;      // #V or empty: xyz tangent along +u, w = bitangent sign
-  std::vector<Vec2f> params;        // #V or empty: (u, v) ∈ [0,1]² of a diced parametric surface (bark lookups)
+  std::vector<Vec4f> params;        // #V or empty: (u, v) ∈ [0,1]² of a diced parametric surface (bark lookups)
   std::vector<float> displacement;  // #V or empty (diced surfaces only): offset along the base normal, m
   std::vector<uint32_t> indices;    // #F×3, counter-clockwise seen from the front
   int material = -1;                // index into the render scene's materials; -1: object's
@@ -21,7 +21,7 @@ struct MeshData {
   size_t triangle_count() const { return indices.size() / 3; }
   size_t memory_bytes() const {
     return positions.capacity() * sizeof(Vec3f) + normals.capacity() * sizeof(Vec3f) + uvs.capacity() * sizeof(Vec2f) +
-           params.capacity() * sizeof(Vec2f) + displacement.capacity() * sizeof(float) + tangents.capacity() * sizeof(Vec4f) +
+           params.capacity() * sizeof(Vec4f) + displacement.capacity() * sizeof(float) + tangents.capacity() * sizeof(Vec4f) +
            indices.capacity() * sizeof(uint32_t);
   }
 };

@@ -164,7 +164,7 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d) {
   auto evaluate = [&](size_t k) {
     const VertexParam& p = params[k];
     m.uvs[k] = s.texcoord(p.u, p.v);
-    if (s.keep_params) m.params[k] = Vec2f(p.u, p.v);
+    if (s.keep_params) m.params[k] = Vec4f(p.u, p.v, 0, 0);
     if (p.copy_from >= 0) return;
     m.positions[k] = s.position(p.u, p.v, &m.displacement[k]);
     // Normal of the displaced surface by central differences (one-sided at open borders).
@@ -202,7 +202,7 @@ struct EdgeTable {
 };
 
 Vec3f displaced(const MeshData& m, const SurfaceDisplacementFn& disp, uint32_t a, uint32_t b, uint32_t c, const Vec3f& bary,
-                Vec2f* params = nullptr, float* offset = nullptr) {
+                Vec4f* params = nullptr, float* offset = nullptr) {
   const Vec3f p = bary[0] * m.positions[a] + bary[1] * m.positions[b] + bary[2] * m.positions[c];
   const Vec3f n = (bary[0] * m.normals[a] + bary[1] * m.normals[b] + bary[2] * m.normals[c]).normalized();
   Vec2f uv = Vec2f::Zero();
@@ -339,11 +339,11 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
 
 long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
   return estimate_triangles(
-      base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }), d);
+      base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec4f*) { return disp(uv, p); }), d);
 }
 
 MeshData dice(const MeshData& base, const DisplacementFn& disp, const DicingParams& d) {
-  return dice(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec2f*) { return disp(uv, p); }),
+  return dice(base, SurfaceDisplacementFn([&disp](const Vec2f& uv, const Vec3f& p, const Vec3f&, Vec4f*) { return disp(uv, p); }),
               d);
 }
 

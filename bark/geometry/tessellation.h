@@ -52,7 +52,7 @@ MeshData dice(const ParametricSurface& s, const DicingParams& d);
 // A displacement that also takes the undisplaced unit normal; when `params` is not null it
 // also writes the vertex's MeshData::params (e.g. the crack depth for shading) from the same
 // evaluation. dice() asks for them with `keep_params`.
-using SurfaceDisplacementFn = std::function<float(const Vec2f& uv, const Vec3f& p, const Vec3f& n, Vec2f* params)>;
+using SurfaceDisplacementFn = std::function<float(const Vec2f& uv, const Vec3f& p, const Vec3f& n, Vec4f* params)>;
 long long estimate_triangles(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d);
 MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const DicingParams& d, bool keep_params = false);
 long long estimate_triangles(const MeshData& base, const DisplacementFn& disp, const DicingParams& d);

@@ -54,7 +54,9 @@ TEST(BarkLookKeys, RoughnessValuesAreCheckedAtTheirPath) {
     expect_error(with(R"({"ridge": 1.2})"), at + "ridge", "must lie in [0, 1]");
     expect_error(with(R"({"fissure": -0.2})"), at + "fissure", "must be >= 0");
     expect_error(with(R"({"noise": 3})"), at + "noise", "must lie in [0, 1]");
-    expect_error(with(R"({"noise_size": 0})"), at + "noise_size", "must be > 0");
+    // Stress bark's roughness noise follows its plates and cracks: no size of its own.
+    expect_error(with(R"({"noise_size": 0})"), at + "noise_size",
+                 json.find("strips") != std::string::npos ? "must be > 0" : "its size is crack.variation.size");
     expect_error(with(R"({"rough": 0.5})"), at + "rough", "unknown key");
     EXPECT_EQ(error_of(with("{}")), "<no error>");
   }
@@ -70,6 +72,17 @@ TEST(BarkLookKeys, StressReliefValuesAreCheckedAtTheirPath) {
   expect_error(stress(R"({"relief": {"wall_size": 0}})"), at + "wall_size", "must be > 0");
   expect_error(stress(R"({"relief": {"depth_ratio": 1}})"), at + "depth_ratio", "unknown key");
   EXPECT_EQ(error_of(stress(R"({"relief": {}})")), "<no error>");
+}
+
+TEST(BarkLookKeys, StressVariationValuesAreCheckedAtTheirPath) {
+  const std::string at = "/objects/0/bark/crack/variation/";
+  expect_error(stress(R"({"variation": {"ridge": 1.5}})"), at + "ridge", "must lie in [0, 1]");
+  expect_error(stress(R"({"variation": {"fissure": -0.1}})"), at + "fissure", "must be >= 0");
+  expect_error(stress(R"({"variation": {"size": 0}})"), at + "size", "must be > 0");
+  expect_error(stress(R"({"variation": {"size": 50}})"), at + "size", "[0.0001, 10] m");
+  expect_error(stress(R"({"variation": {"plates": 1}})"), at + "plates", "unknown key");
+  expect_error(stress(R"({"variation": 0.2})"), "/objects/0/bark/crack/variation", "object");
+  EXPECT_EQ(error_of(stress(R"({"variation": {"ridge": 0.2, "fissure": 0, "size": 0.05}})")), "<no error>");
 }
 
 // An 8-bit sRGB albedo whose left half is red, right half blue, and a height map white on the
@@ -147,6 +160,18 @@ TEST(BarkLookKeys, PhotoRidgesTakeTheHighPixelsAndFissuresTheLowOnes) {
   EXPECT_TRUE(l.colored);
   EXPECT_GT(l.ridge_color.x(), 0.5f);
   EXPECT_GT(l.fissure_color.z(), 0.5f);
+  // Its patches' tints reach stress bark too; an explicit variation replaces them.
+  EXPECT_EQ(l.ridge_tints.size(), c.ridge_tints.size());
+  EXPECT_EQ(l.fissure_tints.size(), c.fissure_tints.size());
+  const SceneDesc u = parse_scene(stress(R"({"photo": {"albedo": "albedo.png", "height": "height.png", "px_per_cm": 4},
+                                            "variation": {"ridge": 0.25, "fissure": 0}})"),
+                                  "scene.json", dir);
+  const CrackLook& v = u.objects.at(0).stress_bark->look;
+  ASSERT_EQ(v.ridge_tints.size(), 9u);  // a grey ramp 1 ± 0.25
+  EXPECT_FLOAT_EQ(v.ridge_tints[0].x(), 0.75f);
+  EXPECT_FLOAT_EQ(v.ridge_tints[4].y(), 1.0f);
+  EXPECT_FLOAT_EQ(v.ridge_tints[8].z(), 1.25f);
+  EXPECT_TRUE(v.fissure_tints.empty());
 }
 
 }  // namespace

@@ -160,8 +160,8 @@ TEST(BarkLook, StressBarkRoundsDownTowardsTheCrackAndShadesItsRoughness) {
   SurfacePoint c;
   c.position = Eigen::Vector3f(0, 0.01f, 0);
   EXPECT_NEAR(-relief.displace(c).offset, -plain.displace(c).offset + 0.5f * look.max_depth, 1e-6f);
-  EXPECT_NEAR(relief.shade({0.5f, 1.0f}).roughness, 0.5f, 1e-6f);
-  EXPECT_NEAR(relief.shade({0.0f, 0.0f}).roughness, 0.9f, 1e-6f);
-  EXPECT_EQ(plain.shade({0.5f, 1.0f}).roughness, -1.0f);
-  EXPECT_FALSE(plain.shade({0.5f, 1.0f}).replaces_albedo);
+  EXPECT_NEAR(relief.shade({0.5f, 1.0f, 0.5f, 0.5f}, Eigen::Vector3f::Zero()).roughness, 0.5f, 1e-6f);
+  EXPECT_NEAR(relief.shade({0.0f, 0.0f, 0.5f, 0.5f}, Eigen::Vector3f::Zero()).roughness, 0.9f, 1e-6f);
+  EXPECT_EQ(plain.shade({0.5f, 1.0f, 0.5f, 0.5f}, Eigen::Vector3f::Zero()).roughness, -1.0f);
+  EXPECT_FALSE(plain.shade({0.5f, 1.0f, 0.5f, 0.5f}, Eigen::Vector3f::Zero()).replaces_albedo);
 }

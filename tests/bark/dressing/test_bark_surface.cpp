@@ -41,7 +41,7 @@ TEST(BarkSurface, StripBarkDisplacesInwardsByTheFieldDepthAndShadesFromItsOwnPar
   EXPECT_FLOAT_EQ(d.offset, -f.depth[f.index(2, 1)]);
   EXPECT_FLOAT_EQ(d.attributes.x(), 2.5f / 4);
   EXPECT_FLOAT_EQ(d.attributes.y(), 1.5f / 2);
-  const BarkShade sh = s->shade(d.attributes);
+  const BarkShade sh = s->shade(d.attributes, p.position);
   EXPECT_TRUE(sh.replaces_albedo);
   EXPECT_FLOAT_EQ(sh.depth, f.depth[f.index(2, 1)] / 0.02f);
   EXPECT_FLOAT_EQ(sh.mask, 1.0f);
@@ -71,7 +71,7 @@ TEST(BarkSurface, CrackedMeshDisplacesByTheVProfileAndDarkensWithDepth) {
   EXPECT_NEAR(d_on.attributes.x(), 1.0f, 1e-5f);  // normalized depth
   EXPECT_EQ(d_on.attributes.y(), 1.0f);           // inside the crack
   EXPECT_EQ(d_off.attributes.y(), 0.0f);
-  const BarkShade sh = s->shade(Eigen::Vector2f(0.5f, 1.0f));
+  const BarkShade sh = s->shade(Eigen::Vector4f(0.5f, 1.0f, 0.5f, 0.0f), Eigen::Vector3f::Zero());
   EXPECT_FALSE(sh.replaces_albedo);
   EXPECT_FLOAT_EQ(sh.depth, 0.5f);
   EXPECT_FLOAT_EQ(sh.mask, 1.0f);
