@@ -80,7 +80,8 @@ constexpr double kStressBytesPerTriangleRaw = 870;
 
 // Rendered geometry, per triangle (diced vertices, indices, the padded copy and the BVH):
 //   phellem render T.json (tree 2 m, grooves, tessellation object mode, edge_length 0.002 /
-//   0.001): 1.15e6 triangles 289 MB, 4.51e6 triangles 711 MB: 129 bytes a triangle.
+//   0.001): 1.15e6 triangles 289 MB, 4.51e6 triangles 711 MB: 129 bytes a triangle. Bark
+//   adds its shading attributes (4 floats a vertex, about 8 bytes a triangle), within the margin.
 constexpr double kGeometryBytesPerTriangle = 129;
 constexpr double kCrackAwareShare = 0.6;
 
