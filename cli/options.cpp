@@ -78,6 +78,7 @@ std::string usage() {
          "                 [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
          "  phellem fit HEIGHT_IMAGE --scale PX_PER_CM --model strips|stress -o DIR [--albedo IMAGE]\n"
          "                 [--time-budget S] [--max-evals N] [--seed S] [--threads N] [--quiet]\n"
+         "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--quiet]\n"
          "  render, turntable, growth and simulate also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
          "  physical memory) and [--memory-estimate] (print the memory each stage needs, and stop).\n"
          "  phellem --help | --version\n"
@@ -94,8 +95,8 @@ Options parse(const std::vector<std::string>& args) {
   if (args.empty()) bad("command", "no command given\n" + usage());
   o.command = args[0];
   if (o.command != "render" && o.command != "turntable" && o.command != "growth" && o.command != "simulate" &&
-      o.command != "fit")
-    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, compare, fit\n" + usage());
+      o.command != "fit" && o.command != "preview")
+    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, compare, fit, preview\n" + usage());
   const bool fit = o.command == "fit";
   const bool frames = o.command == "turntable" || o.command == "growth";
   for (size_t i = 1; i < args.size(); ++i) {
@@ -108,7 +109,9 @@ Options parse(const std::vector<std::string>& args) {
     };
     if (a == "-o" || a == "--output")
       o.exr = value();
-    else if (a == "--png") {
+    else if (a == "--snapshot" && o.command == "preview")
+      o.png = value();
+    else if (a == "--png" && o.command != "preview") {
       if (frames)
         o.png_frames = true;
       else
@@ -180,6 +183,14 @@ Options parse(const std::vector<std::string>& args) {
     if (o.spp || !o.png.empty() || !o.stats.empty() || o.width || o.memory_estimate)
       bad(o.spp ? "--spp" : !o.png.empty() ? "--png" : !o.stats.empty() ? "--stats" : o.width ? "--res" : "--memory-estimate",
           "not an option of fit");
+  }
+  if (o.command == "preview") {
+    if (o.spp || o.seed || o.threads || !o.stats.empty() || !o.view.empty() || o.memory_estimate)
+      bad(o.spp ? "--spp" : o.seed ? "--seed" : o.threads ? "--threads" : !o.stats.empty() ? "--stats" : !o.view.empty() ? "--view" : "--memory-estimate",
+          "not an option of preview");
+    if (!o.exr.empty() && o.png.empty()) bad("-o", "only with --snapshot: the AOVs of the snapshot");
+    if (!o.exr.empty()) need_extension("-o", o.exr, ".exr");
+    if (!o.png.empty()) need_extension("--snapshot", o.png, ".png");
   }
   if (o.command == "render") {
     if (!o.exr.empty()) need_extension("-o", o.exr, ".exr");

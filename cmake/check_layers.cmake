@@ -9,17 +9,19 @@
 #   scene     -> util bark io scene
 #   compare   -> util bark io scene compare       (not renderer: compare renders nothing)
 #   renderer  -> util bark io scene renderer      (not compare)
+#   preview   -> util bark io scene preview       (OpenGL; not renderer: no Embree)
 #   cli       -> everything
-set(folders util bark io scene compare renderer cli)
+set(folders util bark io scene compare renderer preview cli)
 set(allowed_util util)
 set(allowed_bark util bark)
 set(allowed_io util bark io)
 set(allowed_scene util bark io scene)
 set(allowed_compare util bark io scene compare)
 set(allowed_renderer util bark io scene renderer)
+set(allowed_preview util bark io scene preview)
 set(allowed_cli ${folders})
 # Embree is the path tracer's alone: these folders build and link without it.
-set(embree_banned util bark io scene compare)
+set(embree_banned util bark io scene compare preview)
 
 set(violations "")
 foreach(from IN LISTS folders)

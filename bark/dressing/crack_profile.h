@@ -71,13 +71,18 @@ class CrackProfile {
   bool reaches(const Vec3f& a, const Vec3f& b) const;
   float reach() const { return reach_; }
   size_t segments() const { return seg_.size(); }
+  uint32_t seed() const { return seed_; }
+  const CrackLook& look() const { return look_; }
 
- private:
   struct Segment {
     Vec3f a, b;
     float wa, wb;  // half-widths at the ends (m), before noise
     float chain;   // coordinate of the chain (edges between junctions and ends) it belongs to
   };
+  // The crack edges as at() sees them (the preview uploads them to the GPU).
+  const std::vector<Segment>& segment_list() const { return seg_; }
+
+ private:
   // Every edge's chain coordinate: a hash of the chain's first edge.
   static std::vector<float> chain_coordinates(const bark::CrackedMesh& mesh, uint32_t seed);
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;

@@ -56,4 +56,15 @@ BarkShade FieldBarkSurface::shade_at(double u, double v) const {
   return s;
 }
 
+void FieldBarkSurface::export_texels(std::vector<float>* depth_mask, std::vector<float>* albedo) const {
+  depth_mask->clear();
+  albedo->clear();
+  depth_mask->reserve(2 * texels_.size());
+  albedo->reserve(4 * texels_.size());
+  for (const Texel& t : texels_) {
+    depth_mask->insert(depth_mask->end(), {t.depth, t.mask});
+    albedo->insert(albedo->end(), {t.r, t.g, t.b, 1.0f});
+  }
+}
+
 }  // namespace phellem::bark

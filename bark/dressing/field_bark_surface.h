@@ -31,6 +31,10 @@ class FieldBarkSurface final : public BarkSurface {
   int width() const { return width_; }
   int height() const { return height_; }
   double length() const { return length_; }
+  // The texels as the preview's textures take them, row-major from v = 0: (depth, mask) and
+  // (r, g, b, 1) per texel; and the depth that normalizes the `crack` AOV.
+  void export_texels(std::vector<float>* depth_mask, std::vector<float>* albedo) const;
+  double max_depth() const { return max_depth_; }
   size_t memory_bytes() const override { return texels_.capacity() * sizeof(Texel) + roughness_.capacity() * sizeof(float); }
 
  private:

@@ -1,0 +1,76 @@
+#include "cli/preview.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "cli/render_job.h"
+#include "preview/gl_context.h"
+#include "preview/preview_renderer.h"
+#include "preview/preview_scene.h"
+#include "scene/bark_results.h"
+#include "util/errors.h"
+#include "util/output_set.h"
+
+namespace phellem {
+
+namespace {
+
+void write_image(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type, const void* data,
+                 const std::vector<std::string>& names = {}) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw UserError(path, "", "cannot write this image format");
+  OIIO::ImageSpec spec(w, h, channels, type);
+  if (!names.empty()) spec.channelnames = names;
+  if (type == OIIO::TypeDesc::FLOAT) spec.attribute("compression", "zip");
+  spec.attribute("Software", "Phellem preview");
+  if (!out->open(path, spec) || !out->write_image(type, data) || !out->close())
+    throw UserError(path, "", "cannot write: " + out->geterror());
+}
+
+}  // namespace
+
+int run_preview(const cli::Options& o) {
+  if (o.png.empty())
+    throw UserError("", "preview", "the interactive window is not built yet: use --snapshot OUT.png for a headless frame");
+  OutputSet out;
+  out.expect_file("--snapshot", o.png);
+  if (!o.exr.empty()) out.expect_file("-o", o.exr);
+  const auto t0 = std::chrono::steady_clock::now();
+  Loaded l = load(o);
+  const BarkResults bark = simulate_bark(l.desc, !o.quiet);
+  std::string why;
+  auto gl = preview::HeadlessGl::create(&why);
+  if (!gl) throw std::runtime_error("no OpenGL 4.5 context for the preview: " + why);
+  const preview::PreviewScene scene = preview::build_preview_scene(l.desc, bark);
+  preview::PreviewRenderer renderer(scene);
+  preview::PreviewSettings settings;
+  settings.max_level = std::min(settings.max_level, gl->max_tessellation_level());
+  const CameraModel camera(l.desc.camera, l.width, l.height);
+  const preview::PreviewFrame f = renderer.render(camera, settings);
+  out.write("--snapshot", o.png, [&](const std::string& tmp) {
+    std::vector<uint8_t> rgb(size_t(f.width) * size_t(f.height) * 3);
+    for (size_t p = 0; p < rgb.size() / 3; ++p)
+      for (int c = 0; c < 3; ++c) rgb[3 * p + size_t(c)] = f.rgba[4 * p + size_t(c)];
+    write_image(tmp, f.width, f.height, 3, OIIO::TypeDesc::UINT8, rgb.data());
+  });
+  if (!o.exr.empty())
+    out.write("-o", o.exr, [&](const std::string& tmp) {
+      std::vector<float> px(size_t(f.width) * size_t(f.height) * 3);
+      for (size_t p = 0; p < px.size() / 3; ++p) {
+        px[3 * p] = f.mask[p];
+        px[3 * p + 1] = f.crack_depth[p];
+        px[3 * p + 2] = f.distance[p];
+      }
+      write_image(tmp, f.width, f.height, 3, OIIO::TypeDesc::FLOAT, px.data(), {"crack.mask", "crack.depth", "depth.Z"});
+    });
+  out.commit();
+  if (!o.quiet)
+    std::fprintf(stderr, "phellem: preview %dx%d on %s: %lld triangles (%zu patches), %.1f ms a frame, %.1fs total\n", f.width,
+                 f.height, gl->renderer().c_str(), f.primitives, scene.triangles(), f.milliseconds,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return 0;
+}
+
+}  // namespace phellem

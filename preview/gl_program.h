@@ -1,0 +1,42 @@
+// A linked GLSL program of the preview's four stages (preview/shaders.h). Compile and link
+// errors are internal failures (the shaders ship with the program): std::runtime_error with
+// the driver's log and the stage's name.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include "util/math.h"
+
+namespace phellem::preview {
+
+class GlProgram {
+ public:
+  GlProgram();  // the bark program: vertex, tessellation control and evaluation, fragment
+  // The same program with transform feedback capturing `varyings` (the fragment stage kept,
+  // rasterization discarded by the caller).
+  explicit GlProgram(const std::vector<std::string>& feedback_varyings);
+  ~GlProgram();
+  GlProgram(const GlProgram&) = delete;
+  GlProgram& operator=(const GlProgram&) = delete;
+
+  GLuint id() const { return id_; }
+  void use() const { glUseProgram(id_); }
+  GLint location(const char* name) const { return glGetUniformLocation(id_, name); }
+  void set(const char* name, int v) const { glProgramUniform1i(id_, location(name), v); }
+  void set(const char* name, unsigned v) const { glProgramUniform1ui(id_, location(name), v); }
+  void set(const char* name, float v) const { glProgramUniform1f(id_, location(name), v); }
+  void set(const char* name, const Vec2f& v) const { glProgramUniform2f(id_, location(name), v.x(), v.y()); }
+  void set(const char* name, const Vec3f& v) const { glProgramUniform3f(id_, location(name), v.x(), v.y(), v.z()); }
+  void set(const char* name, const Eigen::Vector3i& v) const { glProgramUniform3i(id_, location(name), v.x(), v.y(), v.z()); }
+  void set(const char* name, const Eigen::Matrix4f& m) const {
+    glProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, m.data());
+  }
+
+ private:
+  void build(const std::vector<std::string>& feedback_varyings);
+  GLuint id_ = 0;
+};
+
+}  // namespace phellem::preview

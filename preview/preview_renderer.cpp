@@ -1,0 +1,268 @@
+#include "preview/preview_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace phellem::preview {
+
+namespace {
+
+template <class T>
+GLuint buffer(GLenum target, const std::vector<T>& data) {
+  GLuint b = 0;
+  glCreateBuffers(1, &b);
+  glNamedBufferStorage(b, GLsizeiptr(std::max<size_t>(1, data.size()) * sizeof(T)), data.empty() ? nullptr : data.data(), 0);
+  (void)target;
+  return b;
+}
+
+}  // namespace
+
+PreviewRenderer::PreviewRenderer(const PreviewScene& scene) : scene_(scene) {
+  program_ = std::make_unique<GlProgram>();
+  // Near and far planes from the scene's extent (the depth buffer only orders fragments; the
+  // distance AOV is exact).
+  float extent = 1;
+  for (const auto& o : scene.objects)
+    for (const auto& p : o.positions) extent = std::max(extent, (o.model.topLeftCorner<3, 3>() * p + o.model.topRightCorner<3, 1>()).norm());
+  far_ = 4 * extent + 100;
+  near_ = 0.002f;
+  for (const auto& o : scene.objects) {
+    GpuMesh m;
+    glCreateVertexArrays(1, &m.vao);
+    m.vbo[0] = buffer(GL_ARRAY_BUFFER, o.positions);
+    m.vbo[1] = buffer(GL_ARRAY_BUFFER, o.normals);
+    m.vbo[2] = buffer(GL_ARRAY_BUFFER, o.params);
+    m.vbo[3] = buffer(GL_ARRAY_BUFFER, o.crack_near);
+    m.ibo = buffer(GL_ELEMENT_ARRAY_BUFFER, o.indices);
+    const GLint sizes[4] = {3, 3, 2, 1};
+    const GLsizei strides[4] = {sizeof(Vec3f), sizeof(Vec3f), sizeof(Vec2f), sizeof(float)};
+    for (GLuint a = 0; a < 4; ++a) {
+      glVertexArrayVertexBuffer(m.vao, a, m.vbo[a], 0, strides[a]);
+      glVertexArrayAttribFormat(m.vao, a, sizes[a], GL_FLOAT, GL_FALSE, 0);
+      glVertexArrayAttribBinding(m.vao, a, a);
+      glEnableVertexArrayAttrib(m.vao, a);
+    }
+    glVertexArrayElementBuffer(m.vao, m.ibo);
+    m.count = GLsizei(o.indices.size());
+    if (o.cracks) {
+      m.ssbo[0] = buffer(GL_SHADER_STORAGE_BUFFER, o.cracks->segments);
+      m.ssbo[1] = buffer(GL_SHADER_STORAGE_BUFFER, o.cracks->cell_start);
+      m.ssbo[2] = buffer(GL_SHADER_STORAGE_BUFFER, o.cracks->items);
+    }
+    if (o.field) {
+      glCreateTextures(GL_TEXTURE_2D, 2, m.tex);
+      glTextureStorage2D(m.tex[0], 1, GL_RG32F, o.field->width, o.field->height);
+      glTextureSubImage2D(m.tex[0], 0, 0, 0, o.field->width, o.field->height, GL_RG, GL_FLOAT, o.field->depth_mask.data());
+      glTextureStorage2D(m.tex[1], 1, GL_RGBA32F, o.field->width, o.field->height);
+      glTextureSubImage2D(m.tex[1], 0, 0, 0, o.field->width, o.field->height, GL_RGBA, GL_FLOAT, o.field->albedo.data());
+    }
+    meshes_.push_back(m);
+  }
+}
+
+PreviewRenderer::~PreviewRenderer() {
+  for (auto& m : meshes_) {
+    glDeleteVertexArrays(1, &m.vao);
+    glDeleteBuffers(5, m.vbo);
+    glDeleteBuffers(1, &m.ibo);
+    glDeleteBuffers(3, m.ssbo);
+    glDeleteTextures(2, m.tex);
+  }
+  release_targets();
+}
+
+void PreviewRenderer::release_targets() {
+  if (fbo_) glDeleteFramebuffers(1, &fbo_);
+  const GLuint t[3] = {color_, aov_, depth_};
+  glDeleteTextures(3, t);
+  fbo_ = color_ = aov_ = depth_ = 0;
+}
+
+void PreviewRenderer::ensure_targets(int width, int height) {
+  if (fbo_ && width == width_ && height == height_) return;
+  release_targets();
+  width_ = width;
+  height_ = height;
+  glCreateTextures(GL_TEXTURE_2D, 1, &color_);
+  glTextureStorage2D(color_, 1, GL_RGBA8, width, height);
+  glCreateTextures(GL_TEXTURE_2D, 1, &aov_);
+  glTextureStorage2D(aov_, 1, GL_RGBA32F, width, height);
+  glCreateTextures(GL_TEXTURE_2D, 1, &depth_);
+  glTextureStorage2D(depth_, 1, GL_DEPTH_COMPONENT32F, width, height);
+  glCreateFramebuffers(1, &fbo_);
+  glNamedFramebufferTexture(fbo_, GL_COLOR_ATTACHMENT0, color_, 0);
+  glNamedFramebufferTexture(fbo_, GL_COLOR_ATTACHMENT1, aov_, 0);
+  glNamedFramebufferTexture(fbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
+  const GLenum draw[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(fbo_, 2, draw);
+  if (glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("the preview's framebuffer is incomplete");
+}
+
+void PreviewRenderer::set_uniforms(const GlProgram& p, const CameraModel& camera, const PreviewSettings& s) const {
+  p.set("view_projection", Eigen::Matrix4f(camera.projection(near_, far_) * camera.view()));
+  p.set("viewport", Vec2f(float(camera.width()), float(camera.height())));
+  p.set("target_near_px", s.target_near_px);
+  p.set("target_far_px", s.target_far_px);
+  p.set("max_level", float(s.max_level));
+  p.set("asymmetric_levels", s.asymmetric_levels ? 1 : 0);
+  p.set("camera_position", camera.position());
+  p.set("show_mask", s.show_mask ? 1 : 0);
+  p.set("show_darkening", s.darkening ? 1 : 0);
+  p.set("sun_direction", scene_.sun_direction);
+  p.set("sun_color", scene_.sun_color);
+  p.set("sky_color", scene_.sky_color);
+  p.set("ground_color", scene_.ground_color);
+  p.set("field_depth_mask", 0);
+  p.set("field_albedo", 1);
+}
+
+void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
+  const PreviewObject& o = scene_.objects[k];
+  const GpuMesh& m = meshes_[k];
+  p.set("model", Eigen::Matrix4f(o.model));
+  p.set("bark_kind", int(o.bark));
+  p.set("base_color", o.base_color);
+  if (o.cracks) {
+    const GpuCracks& c = *o.cracks;
+    for (GLuint b = 0; b < 3; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, m.ssbo[b]);
+    p.set("crack_grid_origin", c.origin);
+    p.set("crack_grid_cell", c.cell);
+    p.set("crack_grid_dims", c.dims);
+    p.set("crack_seed", c.seed);
+    p.set("crack_noise", c.look.noise);
+    p.set("crack_wall_noise", c.look.wall_noise);
+    p.set("crack_wall_size", c.look.wall_size);
+    p.set("crack_max_depth", c.look.max_depth);
+    p.set("crack_depth_per_width", c.look.depth_per_width);
+    p.set("crack_shoulder", c.look.shoulder);
+    p.set("crack_shoulder_width", c.look.shoulder_width);
+    p.set("crack_detail", c.look.detail);
+    p.set("crack_detail_size", c.look.detail_size);
+    p.set("darkening", c.look.darkening);
+    p.set("colored", c.look.colored ? 1 : 0);
+    p.set("ridge_color", c.look.ridge_color);
+    p.set("fissure_color", c.look.fissure_color);
+  }
+  if (o.field) {
+    glBindTextureUnit(0, m.tex[0]);
+    glBindTextureUnit(1, m.tex[1]);
+    p.set("field_max_depth", o.field->max_depth);
+  }
+}
+
+long long PreviewRenderer::draw(const CameraModel& camera, const PreviewSettings& s) {
+  const GlProgram& p = *program_;
+  p.use();
+  set_uniforms(p, camera, s);
+  glPatchParameteri(GL_PATCH_VERTICES, 3);
+  glEnable(GL_DEPTH_TEST);
+  glPolygonMode(GL_FRONT_AND_BACK, s.wireframe ? GL_LINE : GL_FILL);
+  GLuint query = 0;
+  glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
+  glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+  const Eigen::Matrix4f vp = camera.projection(near_, far_) * camera.view();
+  for (size_t k = 0; k < meshes_.size(); ++k) {
+    bind_object(p, k);
+    p.set("model_view_projection", Eigen::Matrix4f(vp * scene_.objects[k].model));
+    glBindVertexArray(meshes_[k].vao);
+    glDrawElements(GL_PATCHES, meshes_[k].count, GL_UNSIGNED_INT, nullptr);
+  }
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  GLuint64 primitives = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &primitives);
+  glDeleteQueries(1, &query);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  return (long long)primitives;
+}
+
+PreviewFrame PreviewRenderer::render(const CameraModel& camera, const PreviewSettings& s) {
+  const int w = camera.width(), h = camera.height();
+  ensure_targets(w, h);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, w, h);
+  const float sky[4] = {scene_.sky_color.x(), scene_.sky_color.y(), scene_.sky_color.z(), 1};
+  const float none[4] = {0, 0, std::numeric_limits<float>::infinity(), 0};
+  glClearNamedFramebufferfv(fbo_, GL_COLOR, 0, sky);
+  glClearNamedFramebufferfv(fbo_, GL_COLOR, 1, none);
+  glClearNamedFramebufferfi(fbo_, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  GLuint timer = 0;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &timer);
+  glBeginQuery(GL_TIME_ELAPSED, timer);
+  PreviewFrame f;
+  f.primitives = draw(camera, s);
+  glEndQuery(GL_TIME_ELAPSED);
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(timer, GL_QUERY_RESULT, &ns);
+  glDeleteQueries(1, &timer);
+  f.milliseconds = double(ns) * 1e-6;
+  f.width = w;
+  f.height = h;
+  const size_t n = size_t(w) * size_t(h);
+  std::vector<uint8_t> rgba(4 * n);
+  std::vector<float> aov(4 * n);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(color_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
+  glGetTextureImage(aov_, 0, GL_RGBA, GL_FLOAT, GLsizei(aov.size() * sizeof(float)), aov.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // GL's rows run bottom-up: flip to the path tracer's top-down rows.
+  f.rgba.resize(4 * n);
+  f.mask.resize(n);
+  f.crack_depth.resize(n);
+  f.distance.resize(n);
+  for (int y = 0; y < h; ++y) {
+    const size_t src = size_t(h - 1 - y) * size_t(w), dst = size_t(y) * size_t(w);
+    std::copy_n(&rgba[4 * src], 4 * size_t(w), &f.rgba[4 * dst]);
+    for (int x = 0; x < w; ++x) {
+      const float* a = &aov[4 * (src + size_t(x))];
+      f.mask[dst + size_t(x)] = a[0];
+      f.crack_depth[dst + size_t(x)] = a[1];
+      f.distance[dst + size_t(x)] = a[3] > 0 ? a[2] : std::numeric_limits<float>::infinity();
+    }
+  }
+  return f;
+}
+
+PreviewRenderer::Feedback PreviewRenderer::capture(size_t k, const CameraModel& camera, const PreviewSettings& s) {
+  GlProgram p({"te_base", "te_world"});
+  p.use();
+  set_uniforms(p, camera, s);
+  bind_object(p, k);
+  const Eigen::Matrix4f vp = camera.projection(near_, far_) * camera.view();
+  p.set("model_view_projection", Eigen::Matrix4f(vp * scene_.objects[k].model));
+  // First count the vertices, then capture them.
+  GLuint query = 0;
+  glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
+  glEnable(GL_RASTERIZER_DISCARD);
+  glPatchParameteri(GL_PATCH_VERTICES, 3);
+  glBindVertexArray(meshes_[k].vao);
+  glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+  glDrawElements(GL_PATCHES, meshes_[k].count, GL_UNSIGNED_INT, nullptr);
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  GLuint64 prims = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &prims);
+  glDeleteQueries(1, &query);
+  const size_t floats = size_t(prims) * 3 * 6;
+  GLuint tfb = 0;
+  glCreateBuffers(1, &tfb);
+  glNamedBufferStorage(tfb, GLsizeiptr(std::max<size_t>(1, floats) * sizeof(float)), nullptr, GL_MAP_READ_BIT);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, tfb);
+  glBeginTransformFeedback(GL_TRIANGLES);
+  glDrawElements(GL_PATCHES, meshes_[k].count, GL_UNSIGNED_INT, nullptr);
+  glEndTransformFeedback();
+  glDisable(GL_RASTERIZER_DISCARD);
+  std::vector<float> data(floats);
+  if (floats) glGetNamedBufferSubData(tfb, 0, GLsizeiptr(floats * sizeof(float)), data.data());
+  glDeleteBuffers(1, &tfb);
+  Feedback fb;
+  for (size_t v = 0; v + 6 <= data.size(); v += 6) {
+    fb.base.emplace_back(data[v], data[v + 1], data[v + 2]);
+    fb.displaced.emplace_back(data[v + 3], data[v + 4], data[v + 5]);
+  }
+  return fb;
+}
+
+}  // namespace phellem::preview

@@ -1,0 +1,76 @@
+// Draws a PreviewScene with the tessellation pipeline of shaders/ into an offscreen frame
+// (colour, and an AOV target with the crack mask, the normalized crack depth and the
+// distance from the camera), and reads it back with rows top-down, as the path tracer's
+// images are. Needs a current OpenGL 4.5 core context (HeadlessGl or a window's).
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "preview/gl_program.h"
+#include "preview/preview_scene.h"
+#include "scene/camera_model.h"
+
+namespace phellem::preview {
+
+struct PreviewSettings {
+  float target_near_px = 3.0f;  // micro-edge length near cracks (pixels)
+  float target_far_px = 24.0f;  // elsewhere
+  int max_level = 64;           // the tessellation budget (≤ the hardware's maximum)
+  bool wireframe = false;
+  bool show_mask = false;
+  bool darkening = true;
+  bool asymmetric_levels = false;  // tests only: levels that differ per patch (makes holes)
+};
+
+struct PreviewFrame {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;           // sRGB, rows top-down
+  std::vector<float> mask, crack_depth;  // per pixel
+  std::vector<float> distance;         // from the camera (m); +inf where nothing was hit
+  long long primitives = 0;            // triangles the tessellator generated
+  double milliseconds = 0;             // GPU time of the draw (a timer query)
+};
+
+class PreviewRenderer {
+ public:
+  explicit PreviewRenderer(const PreviewScene& scene);
+  ~PreviewRenderer();
+  PreviewRenderer(const PreviewRenderer&) = delete;
+  PreviewRenderer& operator=(const PreviewRenderer&) = delete;
+
+  PreviewFrame render(const CameraModel& camera, const PreviewSettings& settings);
+  // Draws into the currently bound framebuffer (a window) without reading anything back.
+  long long draw(const CameraModel& camera, const PreviewSettings& settings);
+
+  // Transform feedback of one object's tessellated vertices (tests): per generated triangle
+  // vertex, the undisplaced point (object space) and the displaced one (world space).
+  struct Feedback {
+    std::vector<Vec3f> base, displaced;
+  };
+  Feedback capture(size_t object, const CameraModel& camera, const PreviewSettings& settings);
+
+  size_t objects() const { return meshes_.size(); }
+
+ private:
+  struct GpuMesh {
+    GLuint vao = 0, vbo[5] = {}, ibo = 0, ssbo[3] = {}, tex[2] = {};
+    GLsizei count = 0;
+  };
+  void set_uniforms(const GlProgram& p, const CameraModel& camera, const PreviewSettings& s) const;
+  void bind_object(const GlProgram& p, size_t k) const;
+  void ensure_targets(int width, int height);
+  void release_targets();
+
+  const PreviewScene& scene_;
+  std::vector<GpuMesh> meshes_;
+  std::unique_ptr<GlProgram> program_;
+  GLuint fbo_ = 0, color_ = 0, aov_ = 0, depth_ = 0;
+  int width_ = 0, height_ = 0;
+  float near_ = 0.01f, far_ = 100.0f;
+};
+
+}  // namespace phellem::preview

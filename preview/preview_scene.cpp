@@ -1,0 +1,261 @@
+#include "preview/preview_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "bark/dressing/crack_bark_surface.h"
+#include "bark/geometry/mesh_data.h"
+#include "bark/geometry/tessellation.h"
+#include "io/mesh_io.h"
+#include "scene/displacement.h"
+#include "scene/mesh_source.h"
+#include "scene/tree_surface.h"
+
+namespace phellem::preview {
+
+GpuCracks gpu_cracks(const CrackProfile& profile, size_t max_cells) {
+  GpuCracks g;
+  g.seed = profile.seed();
+  g.look = profile.look();
+  const auto& segs = profile.segment_list();
+  const float reach = profile.reach();
+  Vec3f lo = Vec3f::Constant(std::numeric_limits<float>::max()), hi = -lo;
+  for (const auto& s : segs) {
+    g.segments.insert(g.segments.end(), {s.a.x(), s.a.y(), s.a.z(), s.wa, s.b.x(), s.b.y(), s.b.z(), s.wb, s.chain, 0, 0, 0});
+    lo = lo.cwiseMin(s.a).cwiseMin(s.b);
+    hi = hi.cwiseMax(s.a).cwiseMax(s.b);
+  }
+  if (segs.empty()) {
+    g.cell_start = {0, 0};
+    g.segments.assign(12, 0.0f);  // a buffer may not be empty
+    g.items = {0};
+    return g;
+  }
+  lo.array() -= reach;
+  hi.array() += reach;
+  const Vec3f extent = (hi - lo).cwiseMax(1e-6f);
+  // Cells of the reach, grown until the grid fits the budget.
+  g.cell = std::max(reach, 1e-4f);
+  for (;;) {
+    g.dims = (extent / g.cell).array().ceil().cast<int>().cwiseMax(1);
+    if (double(g.dims.x()) * g.dims.y() * g.dims.z() <= double(max_cells)) break;
+    g.cell *= 1.5f;
+  }
+  g.origin = lo;
+  const size_t cells = size_t(g.dims.x()) * g.dims.y() * g.dims.z();
+  std::vector<std::vector<uint32_t>> lists(cells);
+  auto index = [&](const Vec3f& p) {
+    return ((p - g.origin) / g.cell).array().floor().cast<int>().max(0).min(g.dims.array() - 1).matrix().eval();
+  };
+  for (uint32_t i = 0; i < segs.size(); ++i) {
+    const Vec3f a = segs[i].a.cwiseMin(segs[i].b).array() - reach, b = segs[i].a.cwiseMax(segs[i].b).array() + reach;
+    const Eigen::Vector3i ia = index(a), ib = index(b);
+    for (int z = ia.z(); z <= ib.z(); ++z)
+      for (int y = ia.y(); y <= ib.y(); ++y)
+        for (int x = ia.x(); x <= ib.x(); ++x) lists[(size_t(z) * g.dims.y() + y) * g.dims.x() + x].push_back(i);
+  }
+  g.cell_start.reserve(cells + 1);
+  for (const auto& l : lists) {
+    g.cell_start.push_back(uint32_t(g.items.size()));
+    g.items.insert(g.items.end(), l.begin(), l.end());
+  }
+  g.cell_start.push_back(uint32_t(g.items.size()));
+  if (g.items.empty()) g.items = {0};
+  return g;
+}
+
+size_t PreviewScene::triangles() const {
+  size_t n = 0;
+  for (const auto& o : objects) n += o.triangles();
+  return n;
+}
+
+namespace {
+
+PreviewObject from_mesh(const MeshData& m) {
+  PreviewObject o;
+  o.positions = m.positions;
+  o.normals = m.normals;
+  if (o.normals.size() != o.positions.size()) {
+    MeshData w = m;
+    compute_vertex_normals(w);
+    o.normals = w.normals;
+  }
+  o.params.assign(o.positions.size(), Vec2f::Zero());
+  o.crack_near.assign(o.positions.size(), 0.0f);
+  o.indices = m.indices;
+  return o;
+}
+
+MeshData plane_mesh(const ObjectDesc& o) {
+  const Frame f(o.normal);
+  MeshData m;
+  const float hx = 0.5f * o.size.x(), hy = 0.5f * o.size.y();
+  for (const Vec2f& c : {Vec2f(-hx, -hy), Vec2f(hx, -hy), Vec2f(hx, hy), Vec2f(-hx, hy)}) {
+    m.positions.push_back(o.point + f.s * c.x() + f.t * c.y());
+    m.normals.push_back(o.normal);
+  }
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+MeshData sphere_mesh(const Vec3f& c, float r) {
+  MeshData m;
+  const int nu = 48, nv = 24;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const float th = kPi * float(j) / nv, ph = kTwoPi * float(i) / nu;
+      const Vec3f n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+      m.positions.push_back(c + r * n);
+      m.normals.push_back(n);
+    }
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const uint32_t a = uint32_t(j * (nu + 1) + i), b = a + 1, d = a + uint32_t(nu) + 1, e = d + 1;
+      m.indices.insert(m.indices.end(), {a, e, b, a, d, e});
+    }
+  return m;
+}
+
+}  // namespace
+
+PreviewObject stress_preview_object(const bark::CrackedMesh& cracked, std::shared_ptr<const bark::CrackBarkSurface> surface) {
+  MeshData base = to_mesh_data(cracked.mesh);
+  compute_vertex_normals(base, true);
+  const CrackLook& look = surface->profile().look();
+  DicingParams d;
+  d.screen_space = false;
+  d.target = kPresubdivideHalfWidths * std::max(look.min_width, 1e-4f);
+  d.max_rate = 64;
+  d.refine_edge = [surface](const Vec3f& a, const Vec3f& b) { return surface->reaches(a, b); };
+  const MeshData fine = dice(base, [](const Vec2f&, const Vec3f&, const Vec3f&, Vec4f*) { return 0.0f; }, d);
+  PreviewObject p = from_mesh(fine);
+  p.normals = fine.normals;
+  for (size_t f = 0; f + 2 < p.indices.size(); f += 3)
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t a = p.indices[f + size_t(e)], b = p.indices[f + size_t(e + 1) % 3];
+      if (surface->reaches(p.positions[a], p.positions[b])) p.crack_near[a] = p.crack_near[b] = 1.0f;
+    }
+  p.bark = BarkKind::Cracks;
+  p.cracks = std::make_shared<const GpuCracks>(gpu_cracks(surface->profile()));
+  p.surface = surface;
+  return p;
+}
+
+namespace {
+
+// A tree part as a grid over (u, v): the cylinder's surface with the tree's own displacement
+// at the grid's vertices; strip bark is left to the GPU through (u, v).
+PreviewObject tree_part(const TreePart& part, const DisplacementFn& disp, std::shared_ptr<const bark::FieldBarkSurface> field) {
+  const int nu = 64;
+  const float L = float(part.cylinder->length());
+  const float circumference = kTwoPi * float(std::max(1e-4, part.cylinder->radius(0.0, 0.0)));
+  const int nv = std::clamp(int(std::ceil(L / (circumference / float(nu)))), 1, 4096);
+  PreviewObject o;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const float u = float(i) / nu, v = float(j) / nv;
+      const double theta = 2.0 * M_PI * double(u);
+      const Vec3f p = part.cylinder->position(v, theta).cast<float>();
+      const Vec3f n = part.cylinder->normal(v, theta).cast<float>();
+      const float d = disp ? disp(Vec2f(u, v * L), p) : 0.0f;
+      o.positions.push_back(p + n * d);
+      o.normals.push_back(n);
+      o.params.emplace_back(u, v);
+    }
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const uint32_t a = uint32_t(j * (nu + 1) + i), b = a + 1, c = a + uint32_t(nu) + 1, e = c + 1;
+      o.indices.insert(o.indices.end(), {a, b, e, a, e, c});
+    }
+  o.crack_near.assign(o.positions.size(), field ? 1.0f : 0.0f);  // a fracture field reaches everywhere
+  if (field) {
+    auto g = std::make_shared<GpuField>();
+    g->width = field->width();
+    g->height = field->height();
+    g->max_depth = float(field->max_depth());
+    field->export_texels(&g->depth_mask, &g->albedo);
+    o.field = g;
+    o.bark = BarkKind::Field;
+    o.surface = field;
+  }
+  return o;
+}
+
+Vec3f material_color(const SceneDesc& desc, const std::string& name) {
+  if (name.empty()) return Vec3f(0.8f, 0.8f, 0.8f);
+  const MaterialDesc& m = desc.materials.at(size_t(desc.find_material(name)));
+  Color c = m.base_color;
+  if (!m.base_color_texture.procedural.empty())  // the procedural bark texture's mean
+    c = c * 0.5f * (m.base_color_texture.color_a + m.base_color_texture.color_b);
+  return Vec3f(c.x(), c.y(), c.z());
+}
+
+}  // namespace
+
+PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark) {
+  PreviewScene s;
+  // A sun of irradiance E adds E/π × cos to a Lambertian's radiance per unit albedo.
+  for (const auto& l : desc.lights)
+    if (l.type == LightType::Sun) {
+      s.sun_direction = l.direction.normalized();
+      s.sun_color = Vec3f(l.color.x(), l.color.y(), l.color.z()) * (l.irradiance / kPi);
+      break;
+    }
+  auto bark_of = [&](size_t oi) -> const ObjectBark& {
+    const ObjectBark* b = bark.find(oi);
+    if (!b) throw std::logic_error("object " + std::to_string(oi) + " has no simulated bark");
+    return *b;
+  };
+  for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
+    const ObjectDesc& o = desc.objects[oi];
+    const Vec3f color = material_color(desc, o.material);
+    std::vector<PreviewObject> made;
+    switch (o.type) {
+      case ObjectType::Sphere:
+        made.push_back(from_mesh(sphere_mesh(o.center, o.radius)));
+        break;
+      case ObjectType::Plane:
+        made.push_back(from_mesh(plane_mesh(o)));
+        break;
+      case ObjectType::Tree:
+      case ObjectType::Mesh: {
+        if (o.stress_bark) {
+          made.push_back(stress_preview_object(*bark_of(oi).cracked, crack_surface(o, *bark_of(oi).cracked)));
+          break;
+        }
+        if (o.type == ObjectType::Tree) {
+          const DisplacementFn disp = make_displacement(o.tree.displacement);
+          const auto parts = build_tree(o.tree, disp);
+          const auto* strips = o.tree.strip_bark ? &bark_of(oi).strip_parts : nullptr;
+          for (size_t k = 0; k < parts.size(); ++k)
+            made.push_back(tree_part(parts[k], disp, strips && k < strips->size() ? (*strips)[k] : nullptr));
+          break;
+        }
+        if (o.procedural) {
+          MeshData w = to_mesh_data(object_trimesh(o));
+          compute_vertex_normals(w);
+          made.push_back(from_mesh(w));
+          break;
+        }
+        const LoadedModel model = load_mesh_file(o.file);
+        for (const auto& m : model.meshes) {
+          PreviewObject p = from_mesh(m);
+          p.model = o.transform.matrix;
+          made.push_back(std::move(p));
+        }
+        break;
+      }
+    }
+    for (auto& p : made) {
+      p.name = o.name;
+      p.object_id = int(oi) + 1;
+      p.base_color = color;
+      s.objects.push_back(std::move(p));
+    }
+  }
+  return s;
+}
+
+}  // namespace phellem::preview

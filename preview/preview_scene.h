@@ -1,0 +1,77 @@
+// What the preview draws, built from a scene and its bark without OpenGL (so tests can look
+// at it): per object, a base mesh whose triangles become tessellation patches, with the
+// per-vertex crack nearness the control stage needs; the bark in GPU layout — a stress
+// object's crack segments with a uniform grid over them, a strip tree part's FractureField
+// as texels — and the lights reduced to a sun and a sky/ground ambient.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bark/dressing/crack_bark_surface.h"
+#include "bark/dressing/crack_profile.h"
+#include "bark/dressing/field_bark_surface.h"
+#include "scene/bark_results.h"
+#include "scene/scene_desc.h"
+#include "util/math.h"
+
+namespace phellem::preview {
+
+// A CrackProfile for the GPU (shaders/crack_profile.glsl): 12 floats a segment (a, wa, b, wb,
+// chain, 0, 0, 0) and a dense grid of cells ≥ the reach, each listing every segment whose
+// box ± the reach touches it (cell_start: #cells + 1 offsets into items).
+struct GpuCracks {
+  std::vector<float> segments;
+  std::vector<uint32_t> cell_start, items;
+  Vec3f origin{0, 0, 0};
+  float cell = 1;
+  Eigen::Vector3i dims{1, 1, 1};
+  uint32_t seed = 0;
+  CrackLook look;
+};
+GpuCracks gpu_cracks(const CrackProfile& profile, size_t max_cells = size_t(1) << 21);
+
+struct GpuField {
+  int width = 0, height = 0;
+  std::vector<float> depth_mask, albedo;  // 2 and 4 floats a texel, rows from v = 0
+  float max_depth = 1;
+};
+
+enum class BarkKind { None = 0, Cracks = 1, Field = 2 };
+
+struct PreviewObject {
+  std::string name;
+  int object_id = 0;  // 1-based, as the path tracer's object_id AOV
+  std::vector<Vec3f> positions, normals;  // object space
+  std::vector<Vec2f> params;              // strip bark: the part's (u, v); else 0
+  std::vector<float> crack_near;          // 1 where a crack can reach an edge at this vertex
+  std::vector<uint32_t> indices;          // triangles: the patches
+  Mat4f model = Mat4f::Identity();
+  Vec3f base_color{0.8f, 0.8f, 0.8f};
+  BarkKind bark = BarkKind::None;
+  std::shared_ptr<const GpuCracks> cracks;
+  std::shared_ptr<const GpuField> field;
+  std::shared_ptr<const bark::BarkSurface> surface;  // the C++ surface the GPU mirrors
+  size_t triangles() const { return indices.size() / 3; }
+};
+
+struct PreviewScene {
+  std::vector<PreviewObject> objects;
+  Vec3f sun_direction{0.5f, 0.8f, 0.3f};  // towards the sun
+  Vec3f sun_color{2.0f, 1.9f, 1.8f}, sky_color{0.35f, 0.42f, 0.55f}, ground_color{0.12f, 0.11f, 0.1f};
+  size_t triangles() const;
+};
+
+// The patches near cracks are pre-subdivided on the CPU to edges of at most this many times
+// the cracks' minimum half-width, so that the hardware's 64 levels resolve a V at any zoom.
+constexpr float kPresubdivideHalfWidths = 32;
+
+// A stress-bark object: the cracked mesh as the path tracer takes it (one normal per
+// position), pre-subdivided near the cracks, every vertex of an edge a crack reaches marked.
+PreviewObject stress_preview_object(const bark::CrackedMesh& cracked, std::shared_ptr<const bark::CrackBarkSurface> surface);
+
+// Every tree with strip bark and every stress-bark object must have its entry in `bark`.
+PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark);
+
+}  // namespace phellem::preview

@@ -1,0 +1,52 @@
+#include "preview/shaders.h"
+
+#include <map>
+#include <stdexcept>
+
+namespace phellem::preview {
+
+// Generated from shaders/*.glsl (cmake/shader_sources.cmake).
+const std::map<std::string, std::string>& embedded_shader_files();
+
+const std::string& shader_file(const std::string& name) {
+  const auto& files = embedded_shader_files();
+  const auto it = files.find(name);
+  if (it == files.end()) throw std::logic_error("no shader file " + name + " embedded");
+  return it->second;
+}
+
+std::vector<std::string> stage_files(Stage s) {
+  switch (s) {
+    case Stage::Vertex:
+      return {"common.glsl", "bark.vert"};
+    case Stage::TessControl:
+      return {"common.glsl", "bark.tesc"};
+    case Stage::TessEvaluation:
+      return {"common.glsl", "noise.glsl", "crack_profile.glsl", "fracture_field.glsl", "bark.tese"};
+    case Stage::Fragment:
+      return {"common.glsl", "fracture_field.glsl", "bark.frag"};
+  }
+  return {};
+}
+
+std::string stage_source(Stage s) {
+  std::string src = "#version 450 core\n";
+  for (const auto& f : stage_files(s)) src += "#line 1\n" + shader_file(f) + "\n";
+  return src;
+}
+
+const char* stage_extension(Stage s) {
+  switch (s) {
+    case Stage::Vertex:
+      return "vert";
+    case Stage::TessControl:
+      return "tesc";
+    case Stage::TessEvaluation:
+      return "tese";
+    case Stage::Fragment:
+      return "frag";
+  }
+  return "";
+}
+
+}  // namespace phellem::preview

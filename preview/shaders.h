@@ -1,0 +1,23 @@
+// The preview's GLSL (the repository's top-level shaders/), embedded in the program at build
+// time so `phellem preview` needs no files beside it. GLSL has no #include: each stage is the
+// version line, the shared files and the stage's own file, in that order; the same
+// assembly is what the offline glslangValidator check validates.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace phellem::preview {
+
+enum class Stage { Vertex, TessControl, TessEvaluation, Fragment };
+
+// The text of one file of shaders/ (e.g. "noise.glsl"); throws std::logic_error if absent.
+const std::string& shader_file(const std::string& name);
+// The names of the files one stage is assembled from, in order.
+std::vector<std::string> stage_files(Stage s);
+// The whole source of a stage, starting with "#version 450 core".
+std::string stage_source(Stage s);
+// glslangValidator's file extension for a stage (.vert, .tesc, .tese, .frag).
+const char* stage_extension(Stage s);
+
+}  // namespace phellem::preview
