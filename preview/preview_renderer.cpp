@@ -228,6 +228,9 @@ PreviewFrame PreviewRenderer::render(const CameraModel& camera, const PreviewSet
 
 PreviewRenderer::Feedback PreviewRenderer::capture(size_t k, const CameraModel& camera, const PreviewSettings& s) {
   GlProgram p({"te_base", "te_world"});
+  // A surfaceless context has no default framebuffer: draw into ours (nothing is rasterized).
+  ensure_targets(camera.width(), camera.height());
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   p.use();
   set_uniforms(p, camera, s);
   bind_object(p, k);
@@ -257,6 +260,7 @@ PreviewRenderer::Feedback PreviewRenderer::capture(size_t k, const CameraModel& 
   std::vector<float> data(floats);
   if (floats) glGetNamedBufferSubData(tfb, 0, GLsizeiptr(floats * sizeof(float)), data.data());
   glDeleteBuffers(1, &tfb);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   Feedback fb;
   for (size_t v = 0; v + 6 <= data.size(); v += 6) {
     fb.base.emplace_back(data[v], data[v + 1], data[v + 2]);
