@@ -78,7 +78,8 @@ std::string usage() {
          "                 [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
          "  phellem fit HEIGHT_IMAGE --scale PX_PER_CM --model strips|stress -o DIR [--albedo IMAGE]\n"
          "                 [--time-budget S] [--max-evals N] [--seed S] [--threads N] [--quiet]\n"
-         "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--quiet]\n"
+         "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--max-level N]\n"
+         "                 [--edge-px P] [--frames N] [--quiet]\n"
          "  render, turntable, growth and simulate also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
          "  physical memory) and [--memory-estimate] (print the memory each stage needs, and stop).\n"
          "  phellem --help | --version\n"
@@ -111,6 +112,12 @@ Options parse(const std::vector<std::string>& args) {
       o.exr = value();
     else if (a == "--snapshot" && o.command == "preview")
       o.png = value();
+    else if (a == "--max-level" && o.command == "preview")
+      o.max_level = int(integer(a, value(), 1, 64));
+    else if (a == "--edge-px" && o.command == "preview")
+      o.edge_px = positive(a, value(), 1000, "the micro-edge length near cracks in pixels");
+    else if (a == "--frames" && o.command == "preview")
+      o.frames = int(integer(a, value(), 1, 100000));
     else if (a == "--png" && o.command != "preview") {
       if (frames)
         o.png_frames = true;

@@ -25,6 +25,9 @@ struct Options {
   std::optional<double> scale, time_budget;
   std::string albedo, model;
   std::optional<long long> max_evals;
+  // preview: --snapshot OUT.png (in `png`), --max-level N, --edge-px P, --frames N (window: quit after N frames).
+  std::optional<int> max_level;
+  std::optional<double> edge_px;
 };
 
 Options parse(const std::vector<std::string>& args);

@@ -17,6 +17,8 @@ namespace phellem {
 
 namespace {
 
+constexpr float kSnapshotEdgePx = 2.0f;
+
 void write_image(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type, const void* data,
                  const std::vector<std::string>& names = {}) {
   auto out = OIIO::ImageOutput::create(path);
@@ -46,7 +48,11 @@ int run_preview(const cli::Options& o) {
   const preview::PreviewScene scene = preview::build_preview_scene(l.desc, bark);
   preview::PreviewRenderer renderer(scene);
   preview::PreviewSettings settings;
-  settings.max_level = std::min(settings.max_level, gl->max_tessellation_level());
+  settings.max_level = std::min(o.max_level.value_or(settings.max_level), gl->max_tessellation_level());
+  // A snapshot is one frame: finer micro-edges than the interactive default.
+  const float edge = o.edge_px ? float(*o.edge_px) : kSnapshotEdgePx;
+  settings.target_far_px *= edge / settings.target_near_px;
+  settings.target_near_px = edge;
   const CameraModel camera(l.desc.camera, l.width, l.height);
   const preview::PreviewFrame f = renderer.render(camera, settings);
   out.write("--snapshot", o.png, [&](const std::string& tmp) {

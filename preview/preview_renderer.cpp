@@ -109,6 +109,7 @@ void PreviewRenderer::set_uniforms(const GlProgram& p, const CameraModel& camera
   p.set("target_far_px", s.target_far_px);
   p.set("max_level", float(s.max_level));
   p.set("asymmetric_levels", s.asymmetric_levels ? 1 : 0);
+  p.set("cull_patches", s.cull ? 1 : 0);
   p.set("camera_position", camera.position());
   p.set("show_mask", s.show_mask ? 1 : 0);
   p.set("show_darkening", s.darkening ? 1 : 0);
@@ -124,6 +125,7 @@ void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
   const PreviewObject& o = scene_.objects[k];
   const GpuMesh& m = meshes_[k];
   p.set("model", Eigen::Matrix4f(o.model));
+  p.set("inverse_model", Eigen::Matrix4f(o.model.inverse()));
   p.set("bark_kind", int(o.bark));
   p.set("base_color", o.base_color);
   if (o.cracks) {
@@ -179,8 +181,7 @@ long long PreviewRenderer::draw(const CameraModel& camera, const PreviewSettings
   return (long long)primitives;
 }
 
-PreviewFrame PreviewRenderer::render(const CameraModel& camera, const PreviewSettings& s) {
-  const int w = camera.width(), h = camera.height();
+void PreviewRenderer::clear_offscreen(int w, int h) {
   ensure_targets(w, h);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glViewport(0, 0, w, h);
@@ -189,6 +190,24 @@ PreviewFrame PreviewRenderer::render(const CameraModel& camera, const PreviewSet
   glClearNamedFramebufferfv(fbo_, GL_COLOR, 0, sky);
   glClearNamedFramebufferfv(fbo_, GL_COLOR, 1, none);
   glClearNamedFramebufferfi(fbo_, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+}
+
+long long PreviewRenderer::draw_offscreen(const CameraModel& camera, const PreviewSettings& s) {
+  clear_offscreen(camera.width(), camera.height());
+  // Colour only, as a window draws: the AOV target is not written.
+  const GLenum colour_only[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+  glNamedFramebufferDrawBuffers(fbo_, 2, colour_only);
+  const long long n = draw(camera, s);
+  glFinish();
+  const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(fbo_, 2, both);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return n;
+}
+
+PreviewFrame PreviewRenderer::render(const CameraModel& camera, const PreviewSettings& s) {
+  const int w = camera.width(), h = camera.height();
+  clear_offscreen(w, h);
   GLuint timer = 0;
   glCreateQueries(GL_TIME_ELAPSED, 1, &timer);
   glBeginQuery(GL_TIME_ELAPSED, timer);

@@ -17,13 +17,14 @@
 namespace phellem::preview {
 
 struct PreviewSettings {
-  float target_near_px = 3.0f;  // micro-edge length near cracks (pixels)
-  float target_far_px = 24.0f;  // elsewhere
+  float target_near_px = 6.0f;  // micro-edge length near cracks (pixels; a snapshot uses 2)
+  float target_far_px = 48.0f;  // elsewhere
   int max_level = 64;           // the tessellation budget (≤ the hardware's maximum)
   bool wireframe = false;
   bool show_mask = false;
   bool darkening = true;
   bool asymmetric_levels = false;  // tests only: levels that differ per patch (makes holes)
+  bool cull = true;                // patches outside the view or facing away are not tessellated
 };
 
 struct PreviewFrame {
@@ -43,6 +44,9 @@ class PreviewRenderer {
   PreviewRenderer& operator=(const PreviewRenderer&) = delete;
 
   PreviewFrame render(const CameraModel& camera, const PreviewSettings& settings);
+  // Draws into the offscreen frame and waits for it (glFinish) without reading it back: the
+  // cost of a frame on screen. Returns the triangles generated.
+  long long draw_offscreen(const CameraModel& camera, const PreviewSettings& settings);
   // Draws into the currently bound framebuffer (a window) without reading anything back.
   long long draw(const CameraModel& camera, const PreviewSettings& settings);
 
@@ -63,6 +67,7 @@ class PreviewRenderer {
   void set_uniforms(const GlProgram& p, const CameraModel& camera, const PreviewSettings& s) const;
   void bind_object(const GlProgram& p, size_t k) const;
   void ensure_targets(int width, int height);
+  void clear_offscreen(int width, int height);
   void release_targets();
 
   const PreviewScene& scene_;

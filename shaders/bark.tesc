@@ -19,6 +19,9 @@ uniform float target_near_px;      // micro-edge length near cracks (pixels)
 uniform float target_far_px;       // elsewhere
 uniform float max_level;           // GL_MAX_TESS_GEN_LEVEL, or the user's budget
 uniform int asymmetric_levels;     // tests only: 1 makes levels depend on the patch (holes)
+uniform vec3 camera_position;      // world space
+uniform mat4 inverse_model;
+uniform int cull_patches;          // 0: tessellate every patch
 
 bool before(vec3 a, vec3 b) { return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z))); }
 
@@ -41,11 +44,39 @@ float edge_level(int i, int j) {
   return clamp(level, 1.0, max_level);
 }
 
+// A patch nobody can see: every corner beyond the same side of the view frustum (with a
+// margin for the displacement), or every corner's normal facing away from the eye (bark only
+// carves inwards, so a back-facing patch stays hidden behind the front of the surface).
+bool culled() {
+  if (cull_patches == 0) return false;
+  vec4 c[3];
+  for (int i = 0; i < 3; ++i) c[i] = model_view_projection * vec4(vs_position[i], 1.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    bool below = true, above = true;
+    for (int i = 0; i < 3; ++i) {
+      const float m = 1.05 * c[i].w;
+      below = below && c[i][axis] < -m;
+      above = above && c[i][axis] > m;
+    }
+    if (below || above) return true;
+  }
+  bool away = true;
+  for (int i = 0; i < 3; ++i) {
+    const vec3 eye = (inverse_model * vec4(camera_position, 1.0)).xyz;
+    away = away && dot(vs_normal[i], eye - vs_position[i]) < -0.05 * length(eye - vs_position[i]);
+  }
+  return away;
+}
+
 void main() {
   tc_position[gl_InvocationID] = vs_position[gl_InvocationID];
   tc_normal[gl_InvocationID] = vs_normal[gl_InvocationID];
   tc_param[gl_InvocationID] = vs_param[gl_InvocationID];
   if (gl_InvocationID == 0) {
+    if (culled()) {  // a level of 0 discards the patch
+      gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelInner[0] = 0.0;
+      return;
+    }
     // Outer level k belongs to the edge opposite corner k.
     gl_TessLevelOuter[0] = edge_level(1, 2);
     gl_TessLevelOuter[1] = edge_level(2, 0);

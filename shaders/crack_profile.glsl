@@ -41,12 +41,14 @@ int crack_cell(vec3 p) {
 
 CrackSample crack_at(vec3 p, vec3 n) {
   CrackSample s = CrackSample(0.0, 0.0, 0.0, 0.0);
-  const float mod_w = 1.0 + crack_noise * fbm(p * kCrackNoiseFrequency, crack_seed, 3);
-  float mod_d = 1.0 + crack_noise * fbm(p * kCrackNoiseFrequency, crack_seed + 101u, 3);
-  if (crack_wall_noise > 0.0) mod_d *= 1.0 + crack_wall_noise * fbm(p / crack_wall_size, crack_seed + 202u, 4);
   float outside = 1.0 / 0.0;
   const int cell = crack_cell(p);
-  if (cell >= 0) {
+  // The noise only matters near a segment: far from every crack (an empty cell) the result is
+  // the C++'s without evaluating it (llvmpipe runs this stage on one thread).
+  if (cell >= 0 && cell_start[cell + 1] > cell_start[cell]) {
+    const float mod_w = 1.0 + crack_noise * fbm(p * kCrackNoiseFrequency, crack_seed, 3);
+    float mod_d = 1.0 + crack_noise * fbm(p * kCrackNoiseFrequency, crack_seed + 101u, 3);
+    if (crack_wall_noise > 0.0) mod_d *= 1.0 + crack_wall_noise * fbm(p / crack_wall_size, crack_seed + 202u, 4);
     for (uint k = cell_start[cell]; k < cell_start[cell + 1]; ++k) {
       const CrackSegment g = segments[cell_items[k]];
       const vec3 ab = g.b.xyz - g.a.xyz;

@@ -153,21 +153,31 @@ TEST(PreviewTessellation, CrackAwareLevelsPutMoreTrianglesNearCracksWithinTheBud
   look.detail = 0;  // only the cracks displace
   const PreviewScene scene = sheet_scene(sheet, look);
   PreviewRenderer renderer(scene);
+  PreviewScene blind_scene = sheet_scene(sheet, look);  // the same patches, no vertex marked near a crack
+  std::fill(blind_scene.objects[0].crack_near.begin(), blind_scene.objects[0].crack_near.end(), 0.0f);
+  PreviewRenderer blind(blind_scene);
   const CameraModel camera = oblique_camera(sheet, 256);
-  const PreviewSettings settings;
+  PreviewSettings settings;  // micro-edges of 3 px near cracks, 24 px elsewhere
+  settings.target_near_px = 3;
+  settings.target_far_px = 24;
+  // Triangles per m² within 2 cm of the crack over those beyond.
+  auto density_ratio = [&](const PreviewRenderer::Feedback& fb) {
+    double area[2] = {0, 0};
+    long long count[2] = {0, 0};
+    for (size_t k = 0; k + 2 < fb.base.size(); k += 3) {
+      const Vec3f c = (fb.base[k] + fb.base[k + 1] + fb.base[k + 2]) / 3;
+      const int near = distance_to_crack(sheet, c) < 0.02f ? 1 : 0;
+      area[near] += 0.5 * (fb.base[k + 1] - fb.base[k]).cross(fb.base[k + 2] - fb.base[k]).norm();
+      ++count[near];
+    }
+    EXPECT_GT(count[0], 0);
+    EXPECT_GT(count[1], 0);
+    return (count[1] / area[1]) / (count[0] / area[0]);
+  };
   const auto fb = renderer.capture(0, camera, settings);
-  double area[2] = {0, 0};
-  long long count[2] = {0, 0};
-  for (size_t k = 0; k + 2 < fb.base.size(); k += 3) {
-    const Vec3f c = (fb.base[k] + fb.base[k + 1] + fb.base[k + 2]) / 3;
-    const int near = distance_to_crack(sheet, c) < 0.02f ? 1 : 0;
-    area[near] += 0.5 * (fb.base[k + 1] - fb.base[k]).cross(fb.base[k + 2] - fb.base[k]).norm();
-    ++count[near];
-  }
-  ASSERT_GT(count[0], 0);
-  ASSERT_GT(count[1], 0);
-  const double density_far = count[0] / area[0], density_near = count[1] / area[1];
-  EXPECT_GT(density_near, 8 * density_far) << density_near << " vs " << density_far;
+  const double aware = density_ratio(fb), crack_blind = density_ratio(blind.capture(0, camera, settings));
+  EXPECT_GT(aware, 4.0);
+  EXPECT_GT(aware, 2.0 * crack_blind) << aware << " vs " << crack_blind << " without crack-aware levels";
   // The budget: at the default levels, at most 4 triangles a pixel of the frame.
   const long long triangles = (long long)(fb.base.size() / 3);
   EXPECT_LE(triangles, 4LL * 256 * 256);
