@@ -127,6 +127,7 @@ void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
   p.set("model", Eigen::Matrix4f(o.model));
   p.set("inverse_model", Eigen::Matrix4f(o.model.inverse()));
   p.set("bark_kind", int(o.bark));
+  p.set("curved_patches", o.curved ? 1 : 0);
   p.set("base_color", o.base_color);
   if (o.cracks) {
     const GpuCracks& c = *o.cracks;

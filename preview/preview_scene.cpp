@@ -73,6 +73,8 @@ size_t PreviewScene::triangles() const {
 
 namespace {
 
+constexpr float kPatchSize = 0.02f;  // m
+
 PreviewObject from_mesh(const MeshData& m) {
   PreviewObject o;
   o.positions = m.positions;
@@ -148,9 +150,11 @@ namespace {
 // A tree part as a grid over (u, v): the cylinder's surface with the tree's own displacement
 // at the grid's vertices; strip bark is left to the GPU through (u, v).
 PreviewObject tree_part(const TreePart& part, const DisplacementFn& disp, std::shared_ptr<const bark::FieldBarkSurface> field) {
-  const int nu = 64;
+  // Patches about kPatchSize across (16 to 64 around): the tessellator refines them, and each
+  // patch costs llvmpipe's single-threaded geometry stages a few microseconds.
   const float L = float(part.cylinder->length());
   const float circumference = kTwoPi * float(std::max(1e-4, part.cylinder->radius(0.0, 0.0)));
+  const int nu = std::clamp(int(std::ceil(circumference / kPatchSize)), 16, 64);
   const int nv = std::clamp(int(std::ceil(L / (circumference / float(nu)))), 1, 4096);
   PreviewObject o;
   for (int j = 0; j <= nv; ++j)
@@ -170,6 +174,7 @@ PreviewObject tree_part(const TreePart& part, const DisplacementFn& disp, std::s
       o.indices.insert(o.indices.end(), {a, b, e, a, e, c});
     }
   o.crack_near.assign(o.positions.size(), field ? 1.0f : 0.0f);  // a fracture field reaches everywhere
+  o.curved = true;
   if (field) {
     auto g = std::make_shared<GpuField>();
     g->width = field->width();

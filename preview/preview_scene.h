@@ -50,6 +50,7 @@ struct PreviewObject {
   Mat4f model = Mat4f::Identity();
   Vec3f base_color{0.8f, 0.8f, 0.8f};
   BarkKind bark = BarkKind::None;
+  bool curved = false;  // a smooth surface sampled at the grid's vertices: curved (PN) patches
   std::shared_ptr<const GpuCracks> cracks;
   std::shared_ptr<const GpuField> field;
   std::shared_ptr<const bark::BarkSurface> surface;  // the C++ surface the GPU mirrors

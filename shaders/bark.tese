@@ -15,10 +15,29 @@ out vec3 te_normal;     // interpolated base normal (world space)
 
 uniform mat4 model;
 uniform mat4 view_projection;
+uniform int curved_patches;  // 1: point-normal triangles (tree parts), 0: flat (meshes, as the dicer)
+
+// Curved patches for surfaces the path tracer evaluates exactly (a tree part's generalized
+// cylinder): the cubic point-normal triangle of Vlachos et al. 2001 through the corners with
+// their normals, which follows a cylinder's arc where flat patches would cut its chords.
+// Each edge's curve depends on that edge's two corners only, so neighbours still agree.
+vec3 pn_position(vec3 w) {
+  const vec3 p1 = tc_position[0], p2 = tc_position[1], p3 = tc_position[2];
+  const vec3 n1 = normalize(tc_normal[0]), n2 = normalize(tc_normal[1]), n3 = normalize(tc_normal[2]);
+  const vec3 b210 = (2.0 * p1 + p2 - dot(p2 - p1, n1) * n1) / 3.0, b120 = (2.0 * p2 + p1 - dot(p1 - p2, n2) * n2) / 3.0;
+  const vec3 b021 = (2.0 * p2 + p3 - dot(p3 - p2, n2) * n2) / 3.0, b012 = (2.0 * p3 + p2 - dot(p2 - p3, n3) * n3) / 3.0;
+  const vec3 b102 = (2.0 * p3 + p1 - dot(p1 - p3, n3) * n3) / 3.0, b201 = (2.0 * p1 + p3 - dot(p3 - p1, n1) * n1) / 3.0;
+  const vec3 e = (b210 + b120 + b021 + b012 + b102 + b201) / 6.0, v = (p1 + p2 + p3) / 3.0;
+  const vec3 b111 = e + 0.5 * (e - v);
+  const float a = w.x, b = w.y, c = w.z;
+  return p1 * a * a * a + p2 * b * b * b + p3 * c * c * c + 3.0 * (b210 * a * a * b + b120 * a * b * b + b201 * a * a * c +
+                                                                   b021 * b * b * c + b102 * a * c * c + b012 * b * c * c) +
+         6.0 * b111 * a * b * c;
+}
 
 void main() {
   const vec3 w = gl_TessCoord;
-  const vec3 p = w.x * tc_position[0] + w.y * tc_position[1] + w.z * tc_position[2];
+  const vec3 p = curved_patches != 0 ? pn_position(w) : w.x * tc_position[0] + w.y * tc_position[1] + w.z * tc_position[2];
   const vec3 nn = w.x * tc_normal[0] + w.y * tc_normal[1] + w.z * tc_normal[2];
   const vec3 n = dot(nn, nn) > 0.0 ? normalize(nn) : vec3(0, 1, 0);
   const vec2 uv = w.x * tc_param[0] + w.y * tc_param[1] + w.z * tc_param[2];
