@@ -1,0 +1,100 @@
+// `phellem preview` as a user runs it (issue 23): a headless snapshot and its AOVs, the
+// window under a virtual X server, and every documented mistake as exit 2.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "tests/support/test_util.h"
+
+using namespace phellem;
+
+namespace {
+
+const std::string kScene = R"({
+  "camera": {"position": [0.0, 0.3, 0.3], "look_at": [0, 0.3, 0], "fov_deg": 30},
+  "render": {"resolution": [96, 64]},
+  "objects": [{"type": "mesh",
+    "procedural": {"shape": "trunk", "triangles": 3000, "radius": 0.1, "height": 0.6},
+    "bark": {"model": "stress", "preset": "woodification", "iterations": 40, "alpha": 0.8, "seed": 5,
+             "crack": {"width_per_edge": 0.002, "max_width": 0.008, "max_depth": 0.01}}}]
+})";
+
+std::string scene_file(const std::string& dir) {
+  const std::string path = dir + "/trunk.json";
+  test::write_text(path, kScene);
+  return path;
+}
+
+void expect_exit2(const std::string& args, const std::string& detail) {
+  const auto r = test::run_phellem(args);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+  EXPECT_NE(r.output.find("phellem: error: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(detail), std::string::npos) << args << "\n" << r.output;
+}
+
+}  // namespace
+
+TEST(PreviewCli, SnapshotWritesThePngAndTheAovsAtTheRequestedSize) {
+  const std::string dir = test::temp_dir("preview_snapshot");
+  const auto r = test::run_phellem("preview " + scene_file(dir) + " --snapshot " + dir + "/s.png -o " + dir + "/s.exr --res 120x80");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto png = OIIO::ImageInput::open(dir + "/s.png");
+  ASSERT_TRUE(png);
+  EXPECT_EQ(png->spec().width, 120);
+  EXPECT_EQ(png->spec().height, 80);
+  auto exr = OIIO::ImageInput::open(dir + "/s.exr");
+  ASSERT_TRUE(exr);
+  const auto& spec = exr->spec();
+  ASSERT_EQ(spec.nchannels, 3);
+  const int mask = spec.channelindex("crack.mask"), depth = spec.channelindex("depth.Z");
+  ASSERT_GE(mask, 0);
+  ASSERT_GE(depth, 0);
+  EXPECT_GE(spec.channelindex("crack.depth"), 0);
+  std::vector<float> px(size_t(spec.width) * spec.height * 3);
+  ASSERT_TRUE(exr->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data()));
+  int cracks = 0, hits = 0;
+  for (size_t p = 0; p < px.size() / 3; ++p) {
+    cracks += px[3 * p + size_t(mask)] > 0.5f;
+    const float d = px[3 * p + size_t(depth)];
+    if (std::isfinite(d)) {
+      ++hits;
+      EXPECT_GT(d, 0.15f);  // the trunk's front is 0.2 m away
+      EXPECT_LT(d, 0.45f);
+    }
+  }
+  EXPECT_GT(hits, 120 * 80 / 3);
+  EXPECT_GT(cracks, 10);
+  EXPECT_TRUE(test::leftover_temporaries(dir).empty());
+}
+
+TEST(PreviewCli, MistakesAreExit2WithTheirReason) {
+  const std::string dir = test::temp_dir("preview_errors");
+  const std::string scene = scene_file(dir);
+  expect_exit2("preview " + scene + " --snapshot " + dir + "/s.jpg", "expected a .png file name");
+  expect_exit2("preview " + scene + " -o " + dir + "/a.exr", "only with --snapshot");
+  expect_exit2("preview " + scene + " --snapshot " + dir + "/missing/dir/s.png", "--snapshot");
+  expect_exit2("preview " + dir + "/nope.json --snapshot " + dir + "/s.png", "nope.json");
+  expect_exit2("preview " + scene + " --max-level 65 --snapshot " + dir + "/s.png", "must lie in [1, 64]");
+  expect_exit2("preview " + scene + " --edge-px nan --snapshot " + dir + "/s.png", "--edge-px");
+  expect_exit2("preview " + scene + " --spp 4 --snapshot " + dir + "/s.png", "not an option of preview");
+  // Without a display the window cannot open: said so, with the headless alternative.
+  const auto r = test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " PHELLEM_BINARY " preview " + scene + " --frames 1 --quiet 2>&1");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("phellem: error: <command line>: preview: no display"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--snapshot OUT.png renders a frame without one"), std::string::npos) << r.output;
+}
+
+TEST(PreviewCli, TheWindowRunsUnderAVirtualDisplay) {
+  if (std::system("command -v xvfb-run > /dev/null") != 0) {
+    if (std::getenv("CI")) FAIL() << "xvfb-run is missing in CI (Debian's xvfb)";
+    GTEST_SKIP() << "xvfb-run is not installed";
+  }
+  const std::string dir = test::temp_dir("preview_window");
+  const auto r = test::run_command("xvfb-run -a -s '-screen 0 640x480x24' " PHELLEM_BINARY " preview " + scene_file(dir) +
+                                   " --frames 4 --res 320x240 2>&1");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("4 frames"), std::string::npos) << r.output;
+}
