@@ -37,8 +37,7 @@ GLenum gl_stage(Stage s) {
   return 0;
 }
 
-GLuint compile(Stage s) {
-  const std::string src = stage_source(s);
+GLuint compile(Stage s, const std::string& src) {
   const GLuint sh = glCreateShader(gl_stage(s));
   const char* text = src.c_str();
   glShaderSource(sh, 1, &text, nullptr);
@@ -61,13 +60,22 @@ GLuint compile(Stage s) {
 GlProgram::GlProgram() { build({}); }
 GlProgram::GlProgram(const std::vector<std::string>& feedback_varyings) { build(feedback_varyings); }
 
+GlProgram::GlProgram(BackgroundTag) {
+  link({compile(Stage::Vertex, background_source(Stage::Vertex)), compile(Stage::Fragment, background_source(Stage::Fragment))}, {});
+}
+
+std::unique_ptr<GlProgram> GlProgram::background() { return std::unique_ptr<GlProgram>(new GlProgram(BackgroundTag{})); }
+
 void GlProgram::build(const std::vector<std::string>& varyings) {
-  id_ = glCreateProgram();
   std::vector<GLuint> shaders;
-  for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEvaluation, Stage::Fragment}) {
-    shaders.push_back(compile(s));
-    glAttachShader(id_, shaders.back());
-  }
+  for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEvaluation, Stage::Fragment})
+    shaders.push_back(compile(s, stage_source(s)));
+  link(shaders, varyings);
+}
+
+void GlProgram::link(const std::vector<GLuint>& shaders, const std::vector<std::string>& varyings) {
+  id_ = glCreateProgram();
+  for (GLuint s : shaders) glAttachShader(id_, s);
   if (!varyings.empty()) {
     std::vector<const char*> names;
     for (const auto& v : varyings) names.push_back(v.c_str());

@@ -5,7 +5,9 @@
 
 #include <epoxy/gl.h>
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "util/math.h"
 
@@ -17,6 +19,8 @@ class GlProgram {
   // The same program with transform feedback capturing `varyings` (the fragment stage kept,
   // rasterization discarded by the caller).
   explicit GlProgram(const std::vector<std::string>& feedback_varyings);
+  // The environment background: vertex and fragment stages only.
+  static std::unique_ptr<GlProgram> background();
   ~GlProgram();
   GlProgram(const GlProgram&) = delete;
   GlProgram& operator=(const GlProgram&) = delete;
@@ -35,7 +39,10 @@ class GlProgram {
   }
 
  private:
+  struct BackgroundTag {};
+  explicit GlProgram(BackgroundTag);
   void build(const std::vector<std::string>& feedback_varyings);
+  void link(const std::vector<GLuint>& shaders, const std::vector<std::string>& feedback_varyings);
   GLuint id_ = 0;
 };
 

@@ -22,6 +22,20 @@ GLuint buffer(GLenum target, const std::vector<T>& data) {
 
 PreviewRenderer::PreviewRenderer(const PreviewScene& scene) : scene_(scene) {
   program_ = std::make_unique<GlProgram>();
+  background_ = GlProgram::background();
+  glCreateVertexArrays(1, &empty_vao_);
+  if (const auto& e = scene.environment) {
+    glCreateTextures(GL_TEXTURE_2D, 1, &environment_);
+    const int levels = 1 + int(std::floor(std::log2(double(std::max(e->width, e->height)))));
+    glTextureStorage2D(environment_, levels, GL_RGB32F, e->width, e->height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(environment_, 0, 0, 0, e->width, e->height, GL_RGB, GL_FLOAT, e->rgb.data());
+    glGenerateTextureMipmap(environment_);
+    glTextureParameteri(environment_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(environment_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(environment_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(environment_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
   // Near and far planes from the scene's extent (the depth buffer only orders fragments; the
   // distance AOV is exact).
   float extent = 1;
@@ -71,6 +85,8 @@ PreviewRenderer::~PreviewRenderer() {
     glDeleteBuffers(3, m.ssbo);
     glDeleteTextures(2, m.tex);
   }
+  if (environment_) glDeleteTextures(1, &environment_);
+  glDeleteVertexArrays(1, &empty_vao_);
   release_targets();
 }
 
@@ -157,7 +173,29 @@ void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
   }
 }
 
+void PreviewRenderer::draw_background(const CameraModel& camera) const {
+  const GlProgram& b = *background_;
+  b.use();
+  const Eigen::Matrix4f vp = camera.projection(near_, far_) * camera.view();
+  b.set("inverse_view_projection", Eigen::Matrix4f(vp.inverse()));
+  b.set("camera_position", camera.position());
+  b.set("has_environment", environment_ ? 1 : 0);
+  b.set("sky_color", scene_.sky_color);
+  b.set("environment", 2);
+  if (const auto& e = scene_.environment) {
+    b.set("environment_intensity", e->intensity);
+    b.set("environment_rotation", radians(e->rotation_deg));
+    glBindTextureUnit(2, environment_);
+  }
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glBindVertexArray(empty_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+}
+
 long long PreviewRenderer::draw(const CameraModel& camera, const PreviewSettings& s) {
+  draw_background(camera);
   const GlProgram& p = *program_;
   p.use();
   set_uniforms(p, camera, s);

@@ -66,13 +66,15 @@ class PreviewRenderer {
   };
   void set_uniforms(const GlProgram& p, const CameraModel& camera, const PreviewSettings& s) const;
   void bind_object(const GlProgram& p, size_t k) const;
+  void draw_background(const CameraModel& camera) const;
   void ensure_targets(int width, int height);
   void clear_offscreen(int width, int height);
   void release_targets();
 
   const PreviewScene& scene_;
   std::vector<GpuMesh> meshes_;
-  std::unique_ptr<GlProgram> program_;
+  std::unique_ptr<GlProgram> program_, background_;
+  GLuint environment_ = 0, empty_vao_ = 0;
   GLuint fbo_ = 0, color_ = 0, aov_ = 0, depth_ = 0;
   int width_ = 0, height_ = 0;
   float near_ = 0.01f, far_ = 100.0f;

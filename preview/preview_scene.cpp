@@ -9,6 +9,7 @@
 #include "bark/geometry/tessellation.h"
 #include "io/mesh_io.h"
 #include "scene/displacement.h"
+#include "scene/environment_image.h"
 #include "scene/mesh_source.h"
 #include "scene/tree_surface.h"
 
@@ -199,15 +200,46 @@ Vec3f material_color(const SceneDesc& desc, const std::string& name) {
 
 }  // namespace
 
+// Irradiance on surfaces facing straight up and straight down under a latitude-longitude map
+// (row v at polar angle v·π from +y, as the path tracer maps it): Σ L·|cos θ|·dω per half.
+std::pair<Vec3f, Vec3f> hemisphere_irradiance(const PreviewEnvironment& e) {
+  Eigen::Vector3d up = Eigen::Vector3d::Zero(), down = Eigen::Vector3d::Zero();
+  const double d_phi = 2 * M_PI / e.width, d_theta = M_PI / e.height;
+  for (int y = 0; y < e.height; ++y) {
+    const double theta = (y + 0.5) * d_theta, w = std::cos(theta) * std::sin(theta) * d_theta * d_phi;
+    Eigen::Vector3d row = Eigen::Vector3d::Zero();
+    for (int x = 0; x < e.width; ++x) {
+      const float* c = &e.rgb[(size_t(y) * size_t(e.width) + size_t(x)) * 3];
+      row += Eigen::Vector3d(c[0], c[1], c[2]);
+    }
+    (w > 0 ? up : down) += std::abs(w) * row;
+  }
+  return {(up * e.intensity).cast<float>(), (down * e.intensity).cast<float>()};
+}
+
 PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark) {
   PreviewScene s;
-  // A sun of irradiance E adds E/π × cos to a Lambertian's radiance per unit albedo.
-  for (const auto& l : desc.lights)
-    if (l.type == LightType::Sun) {
+  // A sun of irradiance E adds E/π × cos to a Lambertian's radiance per unit albedo; an
+  // environment its irradiance on an upward and a downward facing surface, over π.
+  bool sun = false;
+  for (const auto& l : desc.lights) {
+    if (l.type == LightType::Sun && !sun) {
+      sun = true;
       s.sun_direction = l.direction.normalized();
       s.sun_color = Vec3f(l.color.x(), l.color.y(), l.color.z()) * (l.irradiance / kPi);
-      break;
+    } else if (l.type == LightType::EnvironmentUniform) {
+      s.sky_color = s.ground_color = Vec3f(l.color.x(), l.color.y(), l.color.z()) * l.intensity;
+    } else if (l.type == LightType::EnvironmentMap && !s.environment) {
+      auto env = std::make_shared<PreviewEnvironment>();
+      env->rgb = load_environment_image(l, &env->width, &env->height);
+      env->intensity = l.intensity;
+      env->rotation_deg = l.rotation_deg;
+      const auto [up, down] = hemisphere_irradiance(*env);
+      s.sky_color = up / kPi;
+      s.ground_color = down / kPi;
+      s.environment = env;
     }
+  }
   auto bark_of = [&](size_t oi) -> const ObjectBark& {
     const ObjectBark* b = bark.find(oi);
     if (!b) throw std::logic_error("object " + std::to_string(oi) + " has no simulated bark");

@@ -57,12 +57,26 @@ struct PreviewObject {
   size_t triangles() const { return indices.size() / 3; }
 };
 
+// An environment map as the background (scene/environment_image.h's pixels, rows top-down).
+struct PreviewEnvironment {
+  int width = 0, height = 0;
+  std::vector<float> rgb;
+  float intensity = 1, rotation_deg = 0;
+};
+
 struct PreviewScene {
   std::vector<PreviewObject> objects;
   Vec3f sun_direction{0.5f, 0.8f, 0.3f};  // towards the sun
-  Vec3f sun_color{2.0f, 1.9f, 1.8f}, sky_color{0.35f, 0.42f, 0.55f}, ground_color{0.12f, 0.11f, 0.1f};
+  // Radiance a white Lambertian surface facing the sun gets per unit albedo, and the ambient
+  // term for normals straight up (sky) and down (ground), blended by the normal's height.
+  Vec3f sun_color{0.95f, 0.95f, 0.95f}, sky_color{0.35f, 0.42f, 0.55f}, ground_color{0.12f, 0.11f, 0.1f};
+  std::shared_ptr<const PreviewEnvironment> environment;  // or a flat sky colour behind
   size_t triangles() const;
 };
+
+// Irradiance on a surface facing straight up and one facing straight down under an
+// environment (intensity included): the ambient term is these over π.
+std::pair<Vec3f, Vec3f> hemisphere_irradiance(const PreviewEnvironment& environment);
 
 // The patches near cracks are pre-subdivided on the CPU to edges of at most this many times
 // the cracks' minimum half-width, so that the hardware's 64 levels resolve a V at any zoom.

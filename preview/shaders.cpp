@@ -35,6 +35,10 @@ std::string stage_source(Stage s) {
   return src;
 }
 
+std::string background_source(Stage s) {
+  return "#version 450 core\n#line 1\n" + shader_file(s == Stage::Vertex ? "background.vert" : "background.frag") + "\n";
+}
+
 const char* stage_extension(Stage s) {
   switch (s) {
     case Stage::Vertex:

@@ -10,9 +10,6 @@
 
 namespace phellem {
 
-// The environment map's pixels as linear RGB (non-finite and negative values become 0).
-std::vector<float> load_environment_image(const LightDesc& l, int* width, int* height);
-
 // The scene's lights in order, then the area lights (if any triangle emits).
 std::vector<std::unique_ptr<Light>> make_lights(const SceneDesc& desc, std::vector<AreaLights::Triangle> area_triangles);
 

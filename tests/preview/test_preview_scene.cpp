@@ -1,0 +1,69 @@
+// What the preview uploads, checked without OpenGL: the crack grid lists every segment a
+// point's V-profile could reach in that point's cell (the GPU visits only that cell), and the
+// ambient term of an environment is its irradiance on an upward and a downward surface.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "bark/dressing/crack_bark_surface.h"
+#include "preview/preview_scene.h"
+#include "tests/bark/dressing/cracked_square.h"
+
+using namespace phellem;
+using namespace phellem::preview;
+
+TEST(PreviewScene, TheCrackGridListsEverySegmentWithinReachInThePointsCell) {
+  bark::CrackedMesh c = test::cracked_square();
+  // More crack edges: a zigzag across the square.
+  for (int i = 0; i < 8; ++i) {
+    c.mesh.positions.emplace_back(-0.04 + 0.01 * i, 0.02 * (i % 2), 0.0);
+    c.crack_width.push_back(2);
+    c.component.push_back(1);
+    c.displacement.emplace_back(Eigen::Vector3f::Zero());
+    if (i > 0) c.crack_edges.push_back({uint32_t(c.mesh.positions.size() - 2), uint32_t(c.mesh.positions.size() - 1)});
+  }
+  CrackLook look;
+  look.shoulder_width = 0.004f;
+  const CrackProfile profile(c, look, 3);
+  for (size_t max_cells : {size_t(1) << 21, size_t(64)}) {  // fine cells, and cells grown to fit a small budget
+    const GpuCracks g = gpu_cracks(profile, max_cells);
+    EXPECT_LE(size_t(g.dims.x()) * g.dims.y() * g.dims.z(), max_cells);
+    EXPECT_EQ(g.segments.size(), 12 * profile.segments());
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-0.06f, 0.06f);
+    for (int k = 0; k < 4000; ++k) {
+      const Vec3f p(u(rng), u(rng), 0.5f * u(rng));
+      const Eigen::Vector3i i = ((p - g.origin) / g.cell).array().floor().cast<int>();
+      if ((i.array() < 0).any() || (i.array() >= g.dims.array()).any()) continue;
+      const size_t cell = (size_t(i.z()) * g.dims.y() + i.y()) * g.dims.x() + i.x();
+      std::vector<uint32_t> listed(g.items.begin() + g.cell_start[cell], g.items.begin() + g.cell_start[cell + 1]);
+      for (uint32_t s = 0; s < profile.segments(); ++s) {
+        const auto& seg = profile.segment_list()[s];
+        const Vec3f ab = seg.b - seg.a;
+        const float t = std::clamp((p - seg.a).dot(ab) / ab.squaredNorm(), 0.0f, 1.0f);
+        if ((p - (seg.a + t * ab)).norm() <= profile.reach()) {
+          EXPECT_NE(std::find(listed.begin(), listed.end(), s), listed.end()) << "segment " << s << " missing at point " << k;
+        }
+      }
+    }
+  }
+}
+
+TEST(PreviewScene, AmbientIsTheEnvironmentsIrradianceUpAndDown) {
+  PreviewEnvironment e;
+  e.width = 64;
+  e.height = 32;
+  e.intensity = 2;
+  e.rgb.assign(size_t(e.width) * e.height * 3, 0.5f);
+  auto [up, down] = hemisphere_irradiance(e);
+  // Uniform radiance L: E = π L on either side (midpoint rule over 32 rows: within 0.2 %).
+  EXPECT_NEAR(up.x(), kPi * 1.0f, 0.002f * kPi);
+  EXPECT_NEAR(down.z(), kPi * 1.0f, 0.002f * kPi);
+  // Only the upper half lit: nothing reaches a surface facing down.
+  for (int y = e.height / 2; y < e.height; ++y)
+    for (int x = 0; x < e.width; ++x)
+      for (int k = 0; k < 3; ++k) e.rgb[(size_t(y) * e.width + x) * 3 + k] = 0;
+  std::tie(up, down) = hemisphere_irradiance(e);
+  EXPECT_NEAR(up.y(), kPi * 1.0f, 0.002f * kPi);
+  EXPECT_EQ(down.y(), 0.0f);
+}
