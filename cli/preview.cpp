@@ -4,17 +4,14 @@
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
 
 #include "cli/render_job.h"
 #include "preview/gl_context.h"
 #include "preview/preview_renderer.h"
 #include "preview/preview_scene.h"
 #include "preview/preview_window.h"
-#include "scene/scene_parser.h"
-#include "util/atomic_file.h"
+#include "preview/view_file.h"
+
 #include "scene/bark_results.h"
 #include "util/errors.h"
 #include "util/output_set.h"
@@ -25,10 +22,6 @@ namespace {
 
 constexpr float kSnapshotEdgePx = 2.0f;
 
-std::string read_file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 void write_image(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type, const void* data,
                  const std::vector<std::string>& names = {}) {
@@ -44,26 +37,6 @@ void write_image(const std::string& path, int w, int h, int channels, OIIO::Type
 
 }  // namespace
 
-// The scene with the window's camera, written beside the scene (relative paths in it stay
-// valid) as <stem>_view.json, or ./default_view.json for the embedded scene.
-std::string save_view(const SceneDesc& desc, const std::string& scene_path, const CameraDesc& c) {
-  const bool embedded = scene_path.empty();
-  nlohmann::json j = nlohmann::json::parse(embedded ? std::string(default_scene_text()) : read_file_text(scene_path));
-  nlohmann::json& cam = j["camera"];
-  cam["position"] = {c.position.x(), c.position.y(), c.position.z()};
-  cam["look_at"] = {c.look_at.x(), c.look_at.y(), c.look_at.z()};
-  cam["up"] = {c.up.x(), c.up.y(), c.up.z()};
-  cam["fov_deg"] = c.fov_deg;
-  const std::filesystem::path p(scene_path);
-  const std::string out = embedded ? "default_view.json" : (desc.base_dir / (p.stem().string() + "_view.json")).string();
-  try {
-    write_atomically(out, [&](const std::string& tmp) { std::ofstream(tmp) << j.dump(2) << "\n"; });
-  } catch (const std::exception& e) {
-    return std::string("nothing (") + e.what() + ")";
-  }
-  return out;
-}
-
 int run_preview(const cli::Options& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (o.png.empty()) {
@@ -76,7 +49,13 @@ int run_preview(const cli::Options& o) {
     w.frames = o.frames.value_or(0);
     if (o.edge_px) w.edge_px = float(*o.edge_px);
     w.max_level = o.max_level.value_or(64);
-    w.save_camera = [&](const CameraDesc& c) { return save_view(l.desc, o.scene, c); };
+    w.save_camera = [&](const CameraDesc& c) {
+      try {
+        return preview::write_view_scene(o.scene, c);
+      } catch (const std::exception& e) {
+        return std::string("nothing (") + e.what() + ")";
+      }
+    };
     const preview::WindowStats st = preview::run_window(preview::build_preview_scene(l.desc, bark), l.desc.camera, w);
     if (!o.quiet)
       std::fprintf(stderr, "phellem: preview: %d frames, median %.1f ms a frame, %lld triangles in the last, first frame %.0f ms after the start\n",

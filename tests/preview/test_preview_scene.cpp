@@ -6,8 +6,12 @@
 #include <random>
 
 #include "bark/dressing/crack_bark_surface.h"
+#include "preview/orbit_camera.h"
 #include "preview/preview_scene.h"
+#include "preview/view_file.h"
+#include "scene/scene_parser.h"
 #include "tests/bark/dressing/cracked_square.h"
+#include "tests/support/test_util.h"
 
 using namespace phellem;
 using namespace phellem::preview;
@@ -66,4 +70,44 @@ TEST(PreviewScene, AmbientIsTheEnvironmentsIrradianceUpAndDown) {
   std::tie(up, down) = hemisphere_irradiance(e);
   EXPECT_NEAR(up.y(), kPi * 1.0f, 0.002f * kPi);
   EXPECT_EQ(down.y(), 0.0f);
+}
+
+TEST(PreviewView, TheOrbitCameraStartsAtTheScenesCameraAndKeepsItsDistance) {
+  CameraDesc d;
+  d.position = Vec3f(0.4f, 1.3f, 1.1f);
+  d.look_at = Vec3f(0.1f, 1.0f, -0.2f);
+  d.fov_deg = 33;
+  OrbitCamera orbit(d);
+  EXPECT_TRUE(orbit.desc().position.isApprox(d.position, 1e-5f));
+  EXPECT_TRUE(orbit.desc().look_at.isApprox(d.look_at));
+  EXPECT_EQ(orbit.desc().fov_deg, 33);
+  const float r = (d.position - d.look_at).norm();
+  orbit.orbit(120, -40);
+  EXPECT_NEAR((orbit.desc().position - orbit.desc().look_at).norm(), r, 1e-5f);
+  orbit.zoom(2);
+  EXPECT_NEAR((orbit.desc().position - orbit.desc().look_at).norm(), r * 0.81f, 1e-5f);
+  orbit.pan(10, 0, 100);
+  EXPECT_FALSE(orbit.desc().look_at.isApprox(d.look_at));
+}
+
+TEST(PreviewView, TheCameraKeyWritesASceneThatRendersThatView) {
+  const std::string dir = test::temp_dir("preview_view");
+  const std::string scene = dir + "/trunk.json";
+  test::write_text(scene, R"({"camera": {"position": [0, 1, 3], "look_at": [0, 1, 0], "aperture_radius": 0.01},
+    "materials": {"m": {"type": "diffuse"}},
+    "objects": [{"type": "sphere", "center": [0, 1, 0], "radius": 0.3, "material": "m"}]})");
+  CameraDesc c;
+  c.position = Vec3f(1, 2, 2);
+  c.look_at = Vec3f(0, 1.1f, 0);
+  c.fov_deg = 25;
+  const std::string out = write_view_scene(scene, c);
+  EXPECT_EQ(out, dir + "/trunk_view.json");
+  const SceneDesc back = load_scene_file(out);
+  EXPECT_TRUE(back.camera.position.isApprox(c.position));
+  EXPECT_TRUE(back.camera.look_at.isApprox(c.look_at));
+  EXPECT_EQ(back.camera.fov_deg, 25);
+  EXPECT_EQ(back.camera.aperture_radius, 0.01f);  // the rest of the scene is kept
+  EXPECT_EQ(back.objects.size(), 1u);
+  // An unwritable folder: an exception, not a crash (the window shows "nothing").
+  EXPECT_ANY_THROW(write_view_scene(dir + "/missing/trunk.json", c));
 }
