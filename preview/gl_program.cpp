@@ -60,11 +60,15 @@ GLuint compile(Stage s, const std::string& src) {
 GlProgram::GlProgram() { build({}); }
 GlProgram::GlProgram(const std::vector<std::string>& feedback_varyings) { build(feedback_varyings); }
 
-GlProgram::GlProgram(BackgroundTag) {
-  link({compile(Stage::Vertex, background_source(Stage::Vertex)), compile(Stage::Fragment, background_source(Stage::Fragment))}, {});
+GlProgram::GlProgram(ScreenTag, const std::string& fragment_file) {
+  link({compile(Stage::Vertex, screen_source(Stage::Vertex, fragment_file)),
+        compile(Stage::Fragment, screen_source(Stage::Fragment, fragment_file))},
+       {});
 }
 
-std::unique_ptr<GlProgram> GlProgram::background() { return std::unique_ptr<GlProgram>(new GlProgram(BackgroundTag{})); }
+std::unique_ptr<GlProgram> GlProgram::screen(const std::string& fragment_file) {
+  return std::unique_ptr<GlProgram>(new GlProgram(ScreenTag{}, fragment_file));
+}
 
 void GlProgram::build(const std::vector<std::string>& varyings) {
   std::vector<GLuint> shaders;

@@ -19,8 +19,8 @@ class GlProgram {
   // The same program with transform feedback capturing `varyings` (the fragment stage kept,
   // rasterization discarded by the caller).
   explicit GlProgram(const std::vector<std::string>& feedback_varyings);
-  // The environment background: vertex and fragment stages only.
-  static std::unique_ptr<GlProgram> background();
+  // A full-screen pass (vertex and fragment stages only): "background.frag" or "overlay.frag".
+  static std::unique_ptr<GlProgram> screen(const std::string& fragment_file);
   ~GlProgram();
   GlProgram(const GlProgram&) = delete;
   GlProgram& operator=(const GlProgram&) = delete;
@@ -39,8 +39,8 @@ class GlProgram {
   }
 
  private:
-  struct BackgroundTag {};
-  explicit GlProgram(BackgroundTag);
+  struct ScreenTag {};
+  GlProgram(ScreenTag, const std::string& fragment_file);
   void build(const std::vector<std::string>& feedback_varyings);
   void link(const std::vector<GLuint>& shaders, const std::vector<std::string>& feedback_varyings);
   GLuint id_ = 0;

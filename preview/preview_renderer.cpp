@@ -22,7 +22,8 @@ GLuint buffer(GLenum target, const std::vector<T>& data) {
 
 PreviewRenderer::PreviewRenderer(const PreviewScene& scene) : scene_(scene) {
   program_ = std::make_unique<GlProgram>();
-  background_ = GlProgram::background();
+  background_ = GlProgram::screen("background.frag");
+  overlay_ = GlProgram::screen("overlay.frag");
   glCreateVertexArrays(1, &empty_vao_);
   if (const auto& e = scene.environment) {
     glCreateTextures(GL_TEXTURE_2D, 1, &environment_);
@@ -194,6 +195,26 @@ void PreviewRenderer::draw_background(const CameraModel& camera) const {
   glDepthMask(GL_TRUE);
 }
 
+void PreviewRenderer::draw_text(const std::string& text, int framebuffer_height, int scale) const {
+  static const std::string kChars = "0123456789 .,mstriangledpxkMf|-";
+  std::vector<int> glyphs;
+  for (char ch : text) {
+    const size_t k = kChars.find(ch);
+    glyphs.push_back(k == std::string::npos ? 10 : int(k));  // unknown: a space
+    if (glyphs.size() == 64) break;
+  }
+  const GlProgram& o = *overlay_;
+  o.use();
+  glProgramUniform1iv(o.id(), o.location("overlay_text"), GLsizei(glyphs.size()), glyphs.data());
+  o.set("overlay_length", int(glyphs.size()));
+  o.set("overlay_scale", std::max(1, scale));
+  o.set("overlay_height", framebuffer_height);
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(empty_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_DEPTH_TEST);
+}
+
 long long PreviewRenderer::draw(const CameraModel& camera, const PreviewSettings& s) {
   draw_background(camera);
   const GlProgram& p = *program_;
@@ -213,6 +234,7 @@ long long PreviewRenderer::draw(const CameraModel& camera, const PreviewSettings
     glDrawElements(GL_PATCHES, meshes_[k].count, GL_UNSIGNED_INT, nullptr);
   }
   glEndQuery(GL_PRIMITIVES_GENERATED);
+  if (!s.overlay.empty()) draw_text(s.overlay, camera.height(), std::max(1, camera.height() / 360));
   GLuint64 primitives = 0;
   glGetQueryObjectui64v(query, GL_QUERY_RESULT, &primitives);
   glDeleteQueries(1, &query);

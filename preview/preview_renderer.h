@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "preview/gl_program.h"
@@ -25,6 +26,7 @@ struct PreviewSettings {
   bool darkening = true;
   bool asymmetric_levels = false;  // tests only: levels that differ per patch (makes holes)
   bool cull = true;                // patches outside the view or facing away are not tessellated
+  std::string overlay;             // a status line over the top-left corner (the window's), or none
 };
 
 struct PreviewFrame {
@@ -50,6 +52,10 @@ class PreviewRenderer {
   // Draws into the currently bound framebuffer (a window) without reading anything back.
   long long draw(const CameraModel& camera, const PreviewSettings& settings);
 
+  // A status line over the top-left corner of the bound framebuffer (a built-in 5×7 font,
+  // `scale` pixels a font pixel; digits, space, ".,|-" and the letters of "ms triangles dpx kMf").
+  void draw_text(const std::string& text, int framebuffer_height, int scale) const;
+
   // Transform feedback of one object's tessellated vertices (tests): per generated triangle
   // vertex, the undisplaced point (object space) and the displaced one (world space).
   struct Feedback {
@@ -73,7 +79,7 @@ class PreviewRenderer {
 
   const PreviewScene& scene_;
   std::vector<GpuMesh> meshes_;
-  std::unique_ptr<GlProgram> program_, background_;
+  std::unique_ptr<GlProgram> program_, background_, overlay_;
   GLuint environment_ = 0, empty_vao_ = 0;
   GLuint fbo_ = 0, color_ = 0, aov_ = 0, depth_ = 0;
   int width_ = 0, height_ = 0;

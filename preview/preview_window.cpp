@@ -135,6 +135,7 @@ WindowStats run_window(PreviewScene scene, const CameraDesc& start, const Window
   PreviewRenderer renderer(scene);
   WindowStats stats;
   std::vector<double> ms;
+  double last_ms = 0;  // shown on the next frame (this one's time is known only after it)
   while (!glfwWindowShouldClose(window.get())) {
     const auto t0 = Clock::now();
     int w = 0, h = 0;
@@ -145,10 +146,15 @@ WindowStats run_window(PreviewScene scene, const CameraDesc& start, const Window
       glViewport(0, 0, w, h);
       glClearColor(scene.sky_color.x(), scene.sky_color.y(), scene.sky_color.z(), 1);
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      char status[96];
+      std::snprintf(status, sizeof status, "%.1f ms | %.2fM triangles | edge %.1f px", last_ms, double(stats.triangles) * 1e-6,
+                    s.settings.target_near_px);
+      s.settings.overlay = status;
       stats.triangles = renderer.draw(CameraModel(s.camera.desc(), w, h), s.settings);
       glfwSwapBuffers(window.get());
     }
     const double frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    last_ms = frame_ms;
     if (stats.frames == 0) stats.first_frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - o.start).count();
     ms.push_back(frame_ms);
     ++stats.frames;

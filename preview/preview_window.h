@@ -2,7 +2,8 @@
 // left drag orbits, right or middle drag pans, the wheel zooms. Keys: W wireframe, M crack
 // mask, D depth darkening, + / − finer / coarser tessellation, ← / → turn the sun, C writes
 // the current camera into a copy of the scene (so `phellem render` renders this view), Esc
-// or Q quits. The title shows the frame time and the triangles of the last frame.
+// or Q quits. A status line over the top-left corner (and the title) shows the frame time,
+// the triangles of the last frame and the micro-edge length.
 #pragma once
 
 #include <chrono>

@@ -35,8 +35,8 @@ std::string stage_source(Stage s) {
   return src;
 }
 
-std::string background_source(Stage s) {
-  return "#version 450 core\n#line 1\n" + shader_file(s == Stage::Vertex ? "background.vert" : "background.frag") + "\n";
+std::string screen_source(Stage s, const std::string& fragment_file) {
+  return "#version 450 core\n#line 1\n" + shader_file(s == Stage::Vertex ? "background.vert" : fragment_file) + "\n";
 }
 
 const char* stage_extension(Stage s) {

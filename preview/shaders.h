@@ -17,8 +17,8 @@ const std::string& shader_file(const std::string& name);
 std::vector<std::string> stage_files(Stage s);
 // The whole source of a stage, starting with "#version 450 core".
 std::string stage_source(Stage s);
-// The environment background's two stages (background.vert, background.frag).
-std::string background_source(Stage s);
+// A full-screen pass: background.vert and the given fragment file (background.frag, overlay.frag).
+std::string screen_source(Stage s, const std::string& fragment_file);
 // glslangValidator's file extension for a stage (.vert, .tesc, .tese, .frag).
 const char* stage_extension(Stage s);
 

@@ -183,3 +183,30 @@ TEST(PreviewTessellation, CrackAwareLevelsPutMoreTrianglesNearCracksWithinTheBud
   EXPECT_LE(triangles, 4LL * 256 * 256);
   EXPECT_EQ(renderer.render(camera, settings).primitives, triangles);  // the primitive query counts the same
 }
+
+TEST(PreviewOverlay, TheStatusLineIsDrawnInTheTopLeftCorner) {
+  PHELLEM_REQUIRE_GL();
+  const Sheet sheet = tilted_sheet();
+  const PreviewScene scene = sheet_scene(sheet, rough_look());
+  PreviewRenderer renderer(scene);
+  const CameraModel camera = oblique_camera(sheet, 360);
+  PreviewSettings s;
+  const PreviewFrame plain = renderer.render(camera, s);
+  s.overlay = "72.7 ms | 0.07M triangles";
+  const PreviewFrame text = renderer.render(camera, s);
+  // Glyph pixels (light yellow) appear inside the text's box, top-left, and nowhere else.
+  int lit = 0, outside = 0;
+  for (int y = 0; y < 360; ++y)
+    for (int x = 0; x < 360; ++x) {
+      const size_t p = 4 * (size_t(y) * 360 + size_t(x));
+      const bool changed = text.rgba[p] != plain.rgba[p] || text.rgba[p + 2] != plain.rgba[p + 2];
+      const bool glyph = text.rgba[p] == 255 && text.rgba[p + 1] == 255 && text.rgba[p + 2] < 230;
+      const bool in_box = y >= 3 && y < 12 && x >= 3 && x < 4 + 26 * 6 + 2;
+      lit += glyph && in_box;
+      outside += changed && !in_box;
+    }
+  EXPECT_GT(lit, 100);
+  EXPECT_EQ(outside, 0);
+  // The AOVs under the text say "nothing hit", not the bark.
+  EXPECT_TRUE(std::isinf(text.distance[size_t(6) * 360 + 10]));
+}
