@@ -1,8 +1,9 @@
 // Frame time of the OpenGL preview on this machine's OpenGL (llvmpipe here), issue 23:
-//   build/bench/phellem_bench_preview SCENE.json WxH [FRAMES] [EDGE_PX]
+//   build/bench/phellem_bench_preview SCENE.json WxH [FRAMES] [EDGE_PX] [tints]
 // Draws FRAMES frames (default 15) after 3 warm-up frames (llvmpipe compiles shader variants
 // on first use) and prints the median wall time per frame (glFinish'ed, not read back: a
-// window's cost) and the triangles a frame. Then Mesa's own ceiling in the same run: a plain mesh of the same triangle count
+// window's cost) and the triangles a frame. Stress bark's per-plate tints are off (as the
+// window starts) unless the fifth argument is "tints". Then Mesa's own ceiling in the same run: a plain mesh of the same triangle count
 // drawn without tessellation by a trivial shader, so the ratio says what tessellation and the
 // bark's displacement cost over drawing that many triangles at all.
 #include <epoxy/gl.h>
@@ -112,7 +113,7 @@ double mesa_ceiling_ms(const CameraModel& cam, long long triangles, int frames) 
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s SCENE.json WxH [FRAMES] [EDGE_PX]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s SCENE.json WxH [FRAMES] [EDGE_PX] [tints]\n", argv[0]);
     return 2;
   }
   try {
@@ -130,6 +131,7 @@ int main(int argc, char** argv) {
     const preview::PreviewScene scene = preview::build_preview_scene(desc, bark);
     preview::PreviewRenderer renderer(scene);
     preview::PreviewSettings s;
+    s.tints = argc > 5 && std::string(argv[5]) == "tints";
     if (argc > 4) {
       const float e = std::stof(argv[4]);
       s.target_far_px *= e / s.target_near_px;
@@ -144,8 +146,8 @@ int main(int argc, char** argv) {
       if (f >= 3) ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
     const double frame = median(ms), ceiling = mesa_ceiling_ms(cam, tris, frames);
-    std::printf("%s %dx%d: %.1f ms a frame (median of %d), %lld triangles, %.2f Mtri/s; plain mesh of as many: %.1f ms, %.2f Mtri/s; ratio %.2f\n",
-                argv[1], w, h, frame, frames, tris, double(tris) / frame * 1e-3, ceiling, double(tris) / ceiling * 1e-3,
+    std::printf("%s %dx%d%s: %.1f ms a frame (median of %d), %lld triangles, %.2f Mtri/s; plain mesh of as many: %.1f ms, %.2f Mtri/s; ratio %.2f\n",
+                argv[1], w, h, s.tints ? " (tints)" : "", frame, frames, tris, double(tris) / frame * 1e-3, ceiling, double(tris) / ceiling * 1e-3,
                 frame / ceiling);
   } catch (const UserError& e) {
     std::fprintf(stderr, "%s\n", e.what());

@@ -57,8 +57,9 @@ GLuint compile(Stage s, const std::string& src) {
 
 }  // namespace
 
-GlProgram::GlProgram() { build({}); }
-GlProgram::GlProgram(const std::vector<std::string>& feedback_varyings) { build(feedback_varyings); }
+GlProgram::GlProgram(const std::string& defines, const std::vector<std::string>& feedback_varyings) {
+  build(defines, feedback_varyings);
+}
 
 GlProgram::GlProgram(ScreenTag, const std::string& fragment_file) {
   link({compile(Stage::Vertex, screen_source(Stage::Vertex, fragment_file)),
@@ -70,10 +71,10 @@ std::unique_ptr<GlProgram> GlProgram::screen(const std::string& fragment_file) {
   return std::unique_ptr<GlProgram>(new GlProgram(ScreenTag{}, fragment_file));
 }
 
-void GlProgram::build(const std::vector<std::string>& varyings) {
+void GlProgram::build(const std::string& defines, const std::vector<std::string>& varyings) {
   std::vector<GLuint> shaders;
   for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEvaluation, Stage::Fragment})
-    shaders.push_back(compile(s, stage_source(s)));
+    shaders.push_back(compile(s, stage_source(s, defines)));
   link(shaders, varyings);
 }
 

@@ -15,10 +15,10 @@ namespace phellem::preview {
 
 class GlProgram {
  public:
-  GlProgram();  // the bark program: vertex, tessellation control and evaluation, fragment
-  // The same program with transform feedback capturing `varyings` (the fragment stage kept,
-  // rasterization discarded by the caller).
-  explicit GlProgram(const std::vector<std::string>& feedback_varyings);
+  // The bark program (vertex, tessellation control and evaluation, fragment) of the variant
+  // `defines` (preview/shaders.h bark_defines), with transform feedback capturing `varyings`
+  // when any (rasterization then discarded by the caller).
+  explicit GlProgram(const std::string& defines, const std::vector<std::string>& feedback_varyings = {});
   // A full-screen pass (vertex and fragment stages only): "background.frag" or "overlay.frag".
   static std::unique_ptr<GlProgram> screen(const std::string& fragment_file);
   ~GlProgram();
@@ -41,7 +41,7 @@ class GlProgram {
  private:
   struct ScreenTag {};
   GlProgram(ScreenTag, const std::string& fragment_file);
-  void build(const std::vector<std::string>& feedback_varyings);
+  void build(const std::string& defines, const std::vector<std::string>& feedback_varyings);
   void link(const std::vector<GLuint>& shaders, const std::vector<std::string>& feedback_varyings);
   GLuint id_ = 0;
 };

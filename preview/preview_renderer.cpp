@@ -1,5 +1,7 @@
 #include "preview/preview_renderer.h"
 
+#include "preview/shaders.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,7 +23,7 @@ GLuint buffer(GLenum target, const std::vector<T>& data) {
 }  // namespace
 
 PreviewRenderer::PreviewRenderer(const PreviewScene& scene) : scene_(scene) {
-  program_ = std::make_unique<GlProgram>();
+  for (const auto& o : scene.objects) program_for(o, true), program_for(o, false);  // compiled up front, not mid-frame
   background_ = GlProgram::screen("background.frag");
   overlay_ = GlProgram::screen("overlay.frag");
   glCreateVertexArrays(1, &empty_vao_);
@@ -143,7 +145,10 @@ void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
   const GpuMesh& m = meshes_[k];
   p.set("model", Eigen::Matrix4f(o.model));
   p.set("inverse_model", Eigen::Matrix4f(o.model.inverse()));
-  p.set("bark_kind", int(o.bark));
+  if (!o.cracks) {
+    p.set("ridge_tint_count", 0);
+    p.set("fissure_tint_count", 0);
+  }
   p.set("curved_patches", o.curved ? 1 : 0);
   p.set("base_color", o.base_color);
   if (o.cracks) {
@@ -166,6 +171,14 @@ void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
     p.set("colored", c.look.colored ? 1 : 0);
     p.set("ridge_color", c.look.ridge_color);
     p.set("fissure_color", c.look.fissure_color);
+    p.set("ridge_tint_count", int(c.ridge_tints.size()));
+    p.set("fissure_tint_count", int(c.fissure_tints.size()));
+    if (!c.ridge_tints.empty())
+      glProgramUniform3fv(p.id(), p.location("ridge_tints"), GLsizei(c.ridge_tints.size()), c.ridge_tints[0].data());
+    if (!c.fissure_tints.empty())
+      glProgramUniform3fv(p.id(), p.location("fissure_tints"), GLsizei(c.fissure_tints.size()), c.fissure_tints[0].data());
+    p.set("tint_size", c.look.tint_size);
+    p.set("tint_seed", c.tint_seed);
   }
   if (o.field) {
     glBindTextureUnit(0, m.tex[0]);
@@ -215,11 +228,19 @@ void PreviewRenderer::draw_text(const std::string& text, int framebuffer_height,
   glEnable(GL_DEPTH_TEST);
 }
 
+std::string PreviewRenderer::variant(const PreviewObject& o, bool tints) {
+  return bark_defines(int(o.bark), tints && o.cracks && (!o.cracks->ridge_tints.empty() || !o.cracks->fissure_tints.empty()));
+}
+
+const GlProgram& PreviewRenderer::program_for(const PreviewObject& o, bool tints) {
+  auto& p = programs_[variant(o, tints)];
+  if (!p) p = std::make_unique<GlProgram>(variant(o, tints));
+  return *p;
+}
+
 long long PreviewRenderer::draw(const CameraModel& camera, const PreviewSettings& s) {
   draw_background(camera);
-  const GlProgram& p = *program_;
-  p.use();
-  set_uniforms(p, camera, s);
+  for (const auto& [defines, p] : programs_) set_uniforms(*p, camera, s);
   glPatchParameteri(GL_PATCH_VERTICES, 3);
   glEnable(GL_DEPTH_TEST);
   glPolygonMode(GL_FRONT_AND_BACK, s.wireframe ? GL_LINE : GL_FILL);
@@ -228,6 +249,8 @@ long long PreviewRenderer::draw(const CameraModel& camera, const PreviewSettings
   glBeginQuery(GL_PRIMITIVES_GENERATED, query);
   const Eigen::Matrix4f vp = camera.projection(near_, far_) * camera.view();
   for (size_t k = 0; k < meshes_.size(); ++k) {
+    const GlProgram& p = program_for(scene_.objects[k], s.tints);
+    p.use();
     bind_object(p, k);
     p.set("model_view_projection", Eigen::Matrix4f(vp * scene_.objects[k].model));
     glBindVertexArray(meshes_[k].vao);
@@ -307,7 +330,7 @@ PreviewFrame PreviewRenderer::render(const CameraModel& camera, const PreviewSet
 }
 
 PreviewRenderer::Feedback PreviewRenderer::capture(size_t k, const CameraModel& camera, const PreviewSettings& s) {
-  GlProgram p({"te_base", "te_world"});
+  GlProgram p(variant(scene_.objects[k], s.tints), {"te_base", "te_world"});
   // A surfaceless context has no default framebuffer: draw into ours (nothing is rasterized).
   ensure_targets(camera.width(), camera.height());
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);

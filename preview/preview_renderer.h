@@ -7,6 +7,7 @@
 #include <epoxy/gl.h>
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct PreviewSettings {
   bool asymmetric_levels = false;  // tests only: levels that differ per patch (makes holes)
   bool cull = true;                // patches outside the view or facing away are not tessellated
   std::string overlay;             // a status line over the top-left corner (the window's), or none
+  // Stress bark's per-plate and per-crack tints (their Voronoi lookup is most of a frame's
+  // fragment work on llvmpipe: the window starts without them, T turns them on).
+  bool tints = true;
 };
 
 struct PreviewFrame {
@@ -79,7 +83,11 @@ class PreviewRenderer {
 
   const PreviewScene& scene_;
   std::vector<GpuMesh> meshes_;
-  std::unique_ptr<GlProgram> program_, background_, overlay_;
+  // The program's defines for this object's bark (tints only where it has them and they are on).
+  static std::string variant(const PreviewObject& o, bool tints);
+  const GlProgram& program_for(const PreviewObject& o, bool tints);
+  std::map<std::string, std::unique_ptr<GlProgram>> programs_;  // by variant
+  std::unique_ptr<GlProgram> background_, overlay_;
   GLuint environment_ = 0, empty_vao_ = 0;
   GLuint fbo_ = 0, color_ = 0, aov_ = 0, depth_ = 0;
   int width_ = 0, height_ = 0;

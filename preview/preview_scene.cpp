@@ -66,6 +66,23 @@ GpuCracks gpu_cracks(const CrackProfile& profile, size_t max_cells) {
   return g;
 }
 
+GpuCracks gpu_cracks(const bark::CrackBarkSurface& surface, size_t max_cells) {
+  GpuCracks g = gpu_cracks(surface.profile(), max_cells);
+  auto take = [](const bark::TintPalette& p) {
+    std::vector<Vec3f> t = p.tints();
+    if (t.size() > 64) {  // evenly picked, in order (the palette stays sorted)
+      std::vector<Vec3f> k;
+      for (size_t i = 0; i < 64; ++i) k.push_back(t[i * t.size() / 64]);
+      t = k;
+    }
+    return t;
+  };
+  g.ridge_tints = take(surface.ridge_palette());
+  g.fissure_tints = take(surface.fissure_palette());
+  g.tint_seed = surface.plates().seed();
+  return g;
+}
+
 size_t PreviewScene::triangles() const {
   size_t n = 0;
   for (const auto& o : objects) n += o.triangles();
@@ -141,7 +158,7 @@ PreviewObject stress_preview_object(const bark::CrackedMesh& cracked, std::share
       if (surface->reaches(p.positions[a], p.positions[b])) p.crack_near[a] = p.crack_near[b] = 1.0f;
     }
   p.bark = BarkKind::Cracks;
-  p.cracks = std::make_shared<const GpuCracks>(gpu_cracks(surface->profile()));
+  p.cracks = std::make_shared<const GpuCracks>(gpu_cracks(*surface));
   p.surface = surface;
   return p;
 }

@@ -23,6 +23,8 @@ namespace phellem::preview {
 // box ± the reach touches it (cell_start: #cells + 1 offsets into items).
 struct GpuCracks {
   std::vector<float> segments;
+  std::vector<Vec3f> ridge_tints, fissure_tints;  // sorted by luminance (bark/dressing/bark_tints.h), at most 64
+  uint32_t tint_seed = 0;
   std::vector<uint32_t> cell_start, items;
   Vec3f origin{0, 0, 0};
   float cell = 1;
@@ -31,6 +33,8 @@ struct GpuCracks {
   CrackLook look;
 };
 GpuCracks gpu_cracks(const CrackProfile& profile, size_t max_cells = size_t(1) << 21);
+// The same with the surface's tints (the palettes it shades with).
+GpuCracks gpu_cracks(const bark::CrackBarkSurface& surface, size_t max_cells = size_t(1) << 21);
 
 struct GpuField {
   int width = 0, height = 0;

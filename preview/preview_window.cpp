@@ -52,6 +52,9 @@ void on_key(GLFWwindow* w, int key, int, int action, int) {
     case GLFW_KEY_D:
       s.settings.darkening = !s.settings.darkening;
       break;
+    case GLFW_KEY_T:
+      s.settings.tints = !s.settings.tints;
+      break;
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:  // finer: shorter micro-edges
       s.settings.target_near_px = std::max(0.5f, s.settings.target_near_px / 1.5f);
@@ -120,6 +123,7 @@ WindowStats run_window(PreviewScene scene, const CameraDesc& start, const Window
   glfwMakeContextCurrent(window.get());
   glfwSwapInterval(0);
   State s{OrbitCamera(start), PreviewSettings{}, &scene, 0, 0, false, false, 1, {}, {}};
+  s.settings.tints = o.tints;
   s.settings.target_far_px *= o.edge_px / s.settings.target_near_px;
   s.settings.target_near_px = o.edge_px;
   GLint max_level = 64;
@@ -147,8 +151,8 @@ WindowStats run_window(PreviewScene scene, const CameraDesc& start, const Window
       glClearColor(scene.sky_color.x(), scene.sky_color.y(), scene.sky_color.z(), 1);
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       char status[96];
-      std::snprintf(status, sizeof status, "%.1f ms | %.2fM triangles | edge %.1f px", last_ms, double(stats.triangles) * 1e-6,
-                    s.settings.target_near_px);
+      std::snprintf(status, sizeof status, "%.1f ms | %.2fM triangles | edge %.1f px%s", last_ms, double(stats.triangles) * 1e-6,
+                    s.settings.target_near_px, s.settings.tints ? " | tints" : "");
       s.settings.overlay = status;
       stats.triangles = renderer.draw(CameraModel(s.camera.desc(), w, h), s.settings);
       glfwSwapBuffers(window.get());

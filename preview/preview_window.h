@@ -1,6 +1,6 @@
 // `phellem preview SCENE.json`: the interactive window (GLFW 3.3, OpenGL 4.5 core). Mouse:
 // left drag orbits, right or middle drag pans, the wheel zooms. Keys: W wireframe, M crack
-// mask, D depth darkening, + / − finer / coarser tessellation, ← / → turn the sun, C writes
+// mask, D depth darkening, T stress bark's per-plate and per-crack tints, + / − finer / coarser tessellation, ← / → turn the sun, C writes
 // the current camera into a copy of the scene (so `phellem render` renders this view), Esc
 // or Q quits. A status line over the top-left corner (and the title) shows the frame time,
 // the triangles of the last frame and the micro-edge length.
@@ -20,6 +20,7 @@ struct WindowOptions {
   int frames = 0;  // quit after this many frames (0: when the user closes the window)
   float edge_px = 6.0f;
   int max_level = 64;
+  bool tints = false;  // stress bark's tints from the first frame (T toggles them)
   bool quiet = false;
   // Called with the camera when C is pressed; returns the file written (shown in the title).
   std::function<std::string(const CameraDesc&)> save_camera;

@@ -24,13 +24,17 @@ std::vector<std::string> stage_files(Stage s) {
     case Stage::TessEvaluation:
       return {"common.glsl", "noise.glsl", "crack_profile.glsl", "fracture_field.glsl", "bark.tese"};
     case Stage::Fragment:
-      return {"common.glsl", "fracture_field.glsl", "bark.frag"};
+      return {"common.glsl", "noise.glsl", "fracture_field.glsl", "bark_tints.glsl", "bark.frag"};
   }
   return {};
 }
 
-std::string stage_source(Stage s) {
-  std::string src = "#version 450 core\n";
+std::string bark_defines(int bark_kind, bool tints) {
+  return "#define BARK_KIND " + std::to_string(bark_kind) + "\n#define BARK_TINTS " + (tints ? "1" : "0") + "\n";
+}
+
+std::string stage_source(Stage s, const std::string& defines) {
+  std::string src = "#version 450 core\n" + defines;
   for (const auto& f : stage_files(s)) src += "#line 1\n" + shader_file(f) + "\n";
   return src;
 }

@@ -15,8 +15,11 @@ enum class Stage { Vertex, TessControl, TessEvaluation, Fragment };
 const std::string& shader_file(const std::string& name);
 // The names of the files one stage is assembled from, in order.
 std::vector<std::string> stage_files(Stage s);
-// The whole source of a stage, starting with "#version 450 core".
-std::string stage_source(Stage s);
+// The whole source of a stage, starting with "#version 450 core" and the variant's `defines`
+// (e.g. "#define BARK_KIND 1\n", shaders/common.glsl).
+std::string stage_source(Stage s, const std::string& defines = "");
+// The defines of a variant of the bark program.
+std::string bark_defines(int bark_kind, bool tints);
 // A full-screen pass: background.vert and the given fragment file (background.frag, overlay.frag).
 std::string screen_source(Stage s, const std::string& fragment_file);
 // glslangValidator's file extension for a stage (.vert, .tesc, .tese, .frag).

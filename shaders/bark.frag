@@ -35,12 +35,20 @@ void main() {
   const vec3 n = dot(carried, carried) > 1e-12 ? normalize(carried) : smooth_n;
   float mask = 0.0, depth = 0.0;
   vec3 albedo = base_color;
-  if (bark_kind == 1) {
+  if (BARK_KIND == 1) {  // CrackBarkSurface::shade
     depth = te_attributes.x;
     mask = te_attributes.y;
-    if (colored != 0) albedo = mix(ridge_color, fissure_color, mask);
+#if BARK_TINTS
+    const vec3 ridge_tint = plate_tint(te_base), fissure_tint = fissure_palette_at(te_attributes.z);
+#else
+    const vec3 ridge_tint = vec3(1.0), fissure_tint = vec3(1.0);
+#endif
+    if (colored != 0)
+      albedo = mix(ridge_color * ridge_tint, fissure_color * fissure_tint, mask);
+    else
+      albedo *= mix(ridge_tint, fissure_tint, mask);
     if (show_darkening != 0) albedo *= 1.0 - darkening * depth;
-  } else if (bark_kind == 2) {
+  } else if (BARK_KIND == 2) {
     const FieldSample f = field_at(te_attributes.xy);
     depth = f.relative;
     mask = f.mask;

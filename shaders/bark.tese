@@ -43,11 +43,11 @@ void main() {
   const vec2 uv = w.x * tc_param[0] + w.y * tc_param[1] + w.z * tc_param[2];
   float offset = 0.0;
   te_attributes = vec4(0.0);
-  if (bark_kind == 1) {
+  if (BARK_KIND == 1) {
     const CrackSample s = crack_at(p, n);
     offset = -s.depth;
     te_attributes = vec4(s.relative, s.mask, s.chain, 0.0);
-  } else if (bark_kind == 2) {
+  } else if (BARK_KIND == 2) {
     const FieldSample f = field_at(uv);
     offset = -f.depth;
     te_attributes = vec4(uv, 0.0, 0.0);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "util/hash.h"
 #include "util/noise.h"
 
 namespace phellem::bark {
@@ -40,21 +41,27 @@ TintPlates::Pick TintPlates::at(const Vec3f& p) const {
   Vec3f q = p / size_;
   if (!q.allFinite() || !(q.cwiseAbs().maxCoeff() < 1e9f)) return out;
   // Warped by noise so the borders wander instead of running straight.
-  q += kWarp * Vec3f(fbm(q, seed_ + 11, 2), fbm(q, seed_ + 12, 2), fbm(q, seed_ + 13, 2));
-  const int64_t cx = int64_t(std::floor(q.x())), cy = int64_t(std::floor(q.y())), cz = int64_t(std::floor(q.z()));
-  auto hash = [&](int64_t x, int64_t y, int64_t z, uint32_t k) {
-    return lattice_hash01(x, y * 0x10001 + z * 0x3fffb, seed_ + k * 0x9e3779b9u, 0, 0);
-  };
+  q += kWarp * Vec3f(fbm(q, seed_ + 11, 1), fbm(q, seed_ + 12, 1), fbm(q, seed_ + 13, 1));
+  const int32_t cx = int32_t(std::floor(q.x())), cy = int32_t(std::floor(q.y())), cz = int32_t(std::floor(q.z()));
   std::array<std::pair<float, float>, 27> sites;  // (distance, coordinate)
   size_t n = 0;
   float nearest = std::numeric_limits<float>::infinity();
-  for (int64_t x = cx - 1; x <= cx + 1; ++x)
-    for (int64_t y = cy - 1; y <= cy + 1; ++y)
-      for (int64_t z = cz - 1; z <= cz + 1; ++z) {
-        const Vec3f site(float(x) + hash(x, y, z, 1), float(y) + hash(x, y, z, 2), float(z) + hash(x, y, z, 3));
-        sites[n++] = {(site - q).norm(), hash(x, y, z, 0)};
+  for (int32_t x = cx - 1; x <= cx + 1; ++x) {
+    const uint32_t hx = hash_combine(seed_, uint32_t(x));
+    for (int32_t y = cy - 1; y <= cy + 1; ++y) {
+      const uint32_t hxy = hash_combine(hx, uint32_t(y));
+      for (int32_t z = cz - 1; z <= cz + 1; ++z) {
+        // One hash per cell (util/hash.h, built coordinate by coordinate: cheap on a GPU too):
+        // its top 24 bits are the plate's coordinate, a second round's three 10-bit fields the
+        // site's place in the cell.
+        const uint32_t h = hash_combine(hxy, uint32_t(z)), j = hash_u32(h ^ 0x2545f491u);
+        const Vec3f site(float(x) + (float(j & 1023u) + 0.5f) / 1024.0f, float(y) + (float((j >> 10) & 1023u) + 0.5f) / 1024.0f,
+                         float(z) + (float((j >> 20) & 1023u) + 0.5f) / 1024.0f);
+        sites[n++] = {(site - q).norm(), float(h >> 8) * (1.0f / 16777216.0f)};
         nearest = std::min(nearest, sites[n - 1].first);
       }
+    }
+  }
   // The sites within the band, nearest first (a fixed order: the blend's sum is deterministic).
   std::sort(sites.begin(), sites.end());
   float total = 0;

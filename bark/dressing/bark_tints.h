@@ -34,7 +34,8 @@ class TintPalette {
 };
 
 // Plates: a Voronoi partition of space (one jittered site per cell of `size` metres, the
-// space warped by noise so the borders wander) that the surface cuts into irregular patches. Each plate has a coordinate uniform on [0, 1) (a
+// space warped by one octave of noise so the borders wander) that the surface cuts into
+// irregular patches. Ported to GLSL in shaders/bark_tints.glsl (the preview). Each plate has a coordinate uniform on [0, 1) (a
 // hash of its cell), so it picks every tint of a palette as often as the photo's patches.
 // Across borders the plates blend over a band of 0.15 cell: every site whose
 // distance is within that band of the nearest one weighs 1 − smoothstep(Δd / band), and the
@@ -56,6 +57,8 @@ class TintPlates {
     }
   };
   Pick at(const Vec3f& p) const;
+  float size() const { return size_; }
+  uint32_t seed() const { return seed_; }
 
  private:
   float size_;

@@ -25,6 +25,9 @@ class CrackBarkSurface final : public BarkSurface {
   size_t memory_bytes() const override { return profile_.segments() * 64; }
 
   const CrackProfile& profile() const { return profile_; }
+  const TintPalette& ridge_palette() const { return ridge_tints_; }
+  const TintPalette& fissure_palette() const { return fissure_tints_; }
+  const TintPlates& plates() const { return plates_; }
 
  private:
   CrackProfile profile_;

@@ -210,3 +210,50 @@ TEST(PreviewOverlay, TheStatusLineIsDrawnInTheTopLeftCorner) {
   // The AOVs under the text say "nothing hit", not the bark.
   EXPECT_TRUE(std::isinf(text.distance[size_t(6) * 360 + 10]));
 }
+
+TEST(PreviewTints, TheFragmentStageTintsPlatesAndCracksAsTheCppShade) {
+  PHELLEM_REQUIRE_GL();
+  const Sheet sheet = tilted_sheet();
+  CrackLook look = rough_look();
+  look.detail = 0;
+  look.shoulder = 0;
+  look.darkening = 0;
+  look.ridge_tints = {Eigen::Vector3f(0.5f, 0.6f, 0.7f), Eigen::Vector3f(0.9f, 0.8f, 0.6f), Eigen::Vector3f(0.7f, 0.9f, 0.8f)};
+  look.fissure_tints = {Eigen::Vector3f(0.6f, 0.5f, 0.5f), Eigen::Vector3f(0.9f, 0.9f, 0.7f)};
+  look.tint_size = 0.05f;
+  PreviewScene scene = sheet_scene(sheet, look);
+  scene.objects[0].base_color = Vec3f(1, 1, 1);
+  scene.sun_color = Vec3f::Zero();  // lit by a white ambient only: the colour is the albedo
+  scene.sky_color = scene.ground_color = Vec3f::Ones();
+  PreviewRenderer renderer(scene);
+  const CameraModel camera = oblique_camera(sheet, 200);
+  PreviewSettings s;
+  s.target_near_px = 1.5f;
+  const PreviewFrame f = renderer.render(camera, s);
+  const auto& surface = *scene.objects[0].surface;
+  auto srgb = [](float c) {
+    c = std::clamp(c, 0.0f, 1.0f);
+    return 255.0f * (c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1 / 2.4f) - 0.055f);
+  };
+  int close = 0, compared = 0, distinct_tints = 0;
+  float previous = -1;
+  for (int y = 0; y < 200; y += 3)
+    for (int x = 0; x < 200; x += 3) {
+      const size_t p = size_t(y) * 200 + size_t(x);
+      if (!std::isfinite(f.distance[p]) || f.mask[p] > 0) continue;  // plates only: away from cracks
+      const Vec3f d = camera.direction(Vec2f(float(x) + 0.5f, float(y) + 0.5f)).normalized();
+      bark::SurfacePoint sp;
+      sp.position = camera.position() + f.distance[p] * d;  // on the undisplaced sheet (no relief)
+      sp.normal = sheet.rotation * Vec3f(0, 0, 1);
+      const bark::BarkShade sh = surface.shade(surface.displace(sp).attributes, sp.position);
+      ++compared;
+      bool ok = true;
+      for (int c = 0; c < 3; ++c) ok = ok && std::abs(float(f.rgba[4 * p + size_t(c)]) - srgb(sh.tint[c])) <= 3.0f;
+      close += ok;
+      if (sh.tint.x() != previous) ++distinct_tints;
+      previous = sh.tint.x();
+    }
+  ASSERT_GT(compared, 2000);
+  EXPECT_GT(distinct_tints, 50);  // many plates in view
+  EXPECT_GT(close, compared * 97 / 100) << close << " of " << compared;
+}

@@ -25,11 +25,19 @@ int validate(const std::string& path) {
 TEST(ShaderSources, EveryStageValidatesWithGlslangValidator) {
   ASSERT_EQ(std::system("command -v glslangValidator > /dev/null"), 0) << "glslang-tools is not installed";
   const std::string dir = test::temp_dir("shader_sources");
-  for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEvaluation, Stage::Fragment}) {
-    const std::string path = dir + "/bark." + stage_extension(s);
-    std::ofstream(path) << stage_source(s);
-    EXPECT_EQ(validate(path), 0) << test::read_text(path + ".log");
-  }
+  // Every variant: no bark, cracks with and without tints, a fracture field.
+  for (const auto& [kind, tints] : {std::pair{0, false}, std::pair{1, false}, std::pair{1, true}, std::pair{2, false}})
+    for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEvaluation, Stage::Fragment}) {
+      const std::string path = dir + "/bark_" + std::to_string(kind) + (tints ? "t." : ".") + stage_extension(s);
+      std::ofstream(path) << stage_source(s, bark_defines(kind, tints));
+      EXPECT_EQ(validate(path), 0) << test::read_text(path + ".log");
+    }
+  for (const char* frag : {"background.frag", "overlay.frag"})
+    for (Stage s : {Stage::Vertex, Stage::Fragment}) {
+      const std::string path = dir + "/" + std::string(frag).substr(0, std::string(frag).find('.')) + "_screen." + stage_extension(s);
+      std::ofstream(path) << screen_source(s, frag);
+      EXPECT_EQ(validate(path), 0) << test::read_text(path + ".log");
+    }
   // The check can fail: a stage with an undeclared variable is refused.
   const std::string bad = dir + "/broken.frag";
   std::ofstream(bad) << "#version 450 core\nout vec4 c;\nvoid main() { c = vec4(undeclared); }\n";
