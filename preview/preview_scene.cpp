@@ -10,6 +10,7 @@
 #include "io/mesh_io.h"
 #include "scene/displacement.h"
 #include "scene/environment_image.h"
+#include "scene/sky_model.h"
 #include "scene/mesh_source.h"
 #include "scene/tree_surface.h"
 
@@ -246,11 +247,17 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
       s.sun_color = Vec3f(l.color.x(), l.color.y(), l.color.z()) * (l.irradiance / kPi);
     } else if (l.type == LightType::EnvironmentUniform) {
       s.sky_color = s.ground_color = Vec3f(l.color.x(), l.color.y(), l.color.z()) * l.intensity;
-    } else if (l.type == LightType::EnvironmentMap && !s.environment) {
+    } else if ((l.type == LightType::EnvironmentMap || l.type == LightType::Sky) && !s.environment) {
       auto env = std::make_shared<PreviewEnvironment>();
-      env->rgb = load_environment_image(l, &env->width, &env->height);
-      env->intensity = l.intensity;
-      env->rotation_deg = l.rotation_deg;
+      if (l.type == LightType::Sky) {  // the path tracer's baked sky (scene/sky_model.h)
+        env->width = 128;
+        env->height = 64;
+        env->rgb = preetham_sky_image(l.direction, l.turbidity, l.sky_intensity.value_or(1.0f), l.ground_albedo, env->width);
+      } else {
+        env->rgb = load_environment_image(l, &env->width, &env->height);
+        env->intensity = l.intensity;
+        env->rotation_deg = l.rotation_deg;
+      }
       const auto [up, down] = hemisphere_irradiance(*env);
       s.sky_color = up / kPi;
       s.ground_color = down / kPi;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "renderer/sampling.h"
+#include "scene/sky_model.h"  // preetham_radiance, preetham_sky_image
 #include "util/math.h"
 
 namespace phellem {
@@ -125,8 +126,6 @@ class SunLight final : public Light {
 // more time in cache misses than in Embree (bench/run_throughput.sh: 6.1 -> 7.9 Mrays/s).
 std::unique_ptr<EnvironmentMap> make_preetham_sky(const Vec3f& sun_direction, float turbidity, float intensity,
                                                   float ground_albedo, int width = 128);
-// The sky's RGB radiance (before baking) in direction d; exposed for tests.
-Color preetham_radiance(const Vec3f& sun_direction, float turbidity, const Vec3f& d);
 
 // Emissive triangles in world space, sampled by area × luminance.
 class AreaLights final : public Light {
