@@ -15,7 +15,7 @@ PACKAGES=(
   libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libopencolorio-dev
   libeigen3-dev libtinygltf-dev libtinyobjloader-dev libtbb-dev nlohmann-json3-dev libcgal-dev
   libgtest-dev libgmock-dev libbenchmark-dev libnlopt-cxx-dev chromium
-  libglfw3-dev libepoxy-dev libegl-dev libgl1-mesa-dri glslang-tools xvfb xauth
+  libglfw3-dev libepoxy-dev libegl-dev libgl1-mesa-dri glslang-tools xvfb xauth libtet1.5-dev
 )
 
 missing=()

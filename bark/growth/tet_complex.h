@@ -1,0 +1,45 @@
+// The labelled tetrahedral volume of cambial growth (Kratt et al., Woodification, sec. 3;
+// deformable simplicial complexes): TetGen (AGPL-3.0, used through its library interface and
+// only here in bark/growth/) tetrahedralizes the region around a closed surface and a padded
+// bounding box, keeping the surface's vertices and triangles (switch Y); each tetrahedron is
+// labelled inside (1) or outside (0) the surface, and the bark surface is the set of faces
+// between the two labels. Orientation is decided by CGAL's exact predicates.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "bark/geometry/tri_mesh.h"
+
+namespace phellem::bark {
+
+struct TetSettings {
+  double padding = 0.5;          // the box around the surface, × its largest extent on every side
+  double quality = 1.5;          // TetGen's radius-edge bound (switch q)
+  double max_volume = 0;         // m³ per tetrahedron (switch a; 0: none)
+};
+
+struct TetComplex {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<uint32_t, 4>> tets;  // positively oriented (orient3d > 0)
+  std::vector<uint8_t> label;                 // per tet: 1 inside, 0 outside
+  std::vector<uint8_t> on_interface;          // per point: 1 if a vertex of an interface face
+  std::vector<uint8_t> on_box;                // per point: 1 on the padding box's boundary
+
+  // The faces between labels, oriented outwards from the inside (the bark surface).
+  std::vector<std::array<uint32_t, 3>> interface_faces() const;
+  double volume(uint8_t which) const;  // summed volume of the tetrahedra with that label
+  // The first tetrahedron that is not positively oriented by the exact predicate, or −1.
+  long first_inverted() const;
+};
+
+// Throws UserError(file, where, ...) when the surface is not closed or TetGen refuses it
+// (self-intersections): `where` names the object.
+TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& settings, const std::string& file,
+                                  const std::string& where);
+
+}  // namespace phellem::bark
