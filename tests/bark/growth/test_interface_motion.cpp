@@ -1,0 +1,78 @@
+// The cambium's motion, Eq. (1) of Kratt et al. (bark/growth/interface_motion.h): a sphere
+// grown at constant speed reaches radius R₀ + ∫s dt everywhere and the matching volume, no
+// tetrahedron ever inverts, and eccentric growth favours its side by (1 + e)/(1 − e).
+#include <gtest/gtest.h>
+
+#include "bark/geometry/procedural_meshes.h"
+#include "bark/growth/interface_motion.h"
+
+using namespace phellem;
+using namespace phellem::bark;
+
+namespace {
+
+// c = 1: the Weibull density is exp(−t), its cumulative 1 − exp(−t); over a short span of
+// ages the speed is nearly constant, and the total is exact whatever the steps.
+GrowthFunction growth_of(double thickness) {
+  GrowthFunction g;
+  g.weibull_c = 1;
+  g.thickness = float(thickness);
+  return g;
+}
+
+double enclosed_volume(const TetComplex& c) { return c.volume(1); }
+
+}  // namespace
+
+TEST(InterfaceMotion, ASphereGrowsToItsRadiusPlusTheThickeningEverywhere) {
+  const double r0 = 0.5;
+  TetComplex c = tetrahedralize_surface(icosphere(3, r0), TetSettings{}, "s.json", "/objects/0");
+  const double v0 = enclosed_volume(c);
+  const GrowthFunction g = growth_of(1.0);
+  const double t_end = 0.08;  // total thickening 1 − exp(−0.08) = 0.0769 m
+  const int steps = 8;
+  for (int k = 0; k < steps; ++k) {
+    const InterfaceStepStats st = advance_interface(c, g, t_end * k / steps, t_end * (k + 1) / steps);
+    EXPECT_EQ(c.first_inverted(), -1) << "step " << k;
+    EXPECT_EQ(st.clamped, 0) << "step " << k;
+  }
+  const double grown = g.cumulative(t_end);
+  // Every interface vertex at R₀ + ∫s dt (within a hundredth of an edge: icosphere(3) edges
+  // are about 0.08 m; the vertex normals of a sphere are radial).
+  double worst = 0;
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i]) worst = std::max(worst, std::abs(c.points[i].norm() - (r0 + grown)));
+  EXPECT_LT(worst, 1e-3);
+  // The volume scales as the radius cubed (the polyhedron grows homothetically).
+  EXPECT_NEAR(enclosed_volume(c) / v0, std::pow((r0 + grown) / r0, 3), 0.01);
+}
+
+TEST(InterfaceMotion, EccentricGrowthFavoursItsSide) {
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+  GrowthFunction g = growth_of(1.0);
+  g.eccentricity = 0.4f;
+  g.eccentricity_direction = Vec3f(1, 0, 0);
+  for (int k = 0; k < 5; ++k) advance_interface(c, g, 0.01 * k, 0.01 * (k + 1));
+  EXPECT_EQ(c.first_inverted(), -1);
+  double plus = 0, minus = 0;
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i]) {
+      plus = std::max(plus, c.points[i].x());
+      minus = std::max(minus, -c.points[i].x());
+    }
+  const double e = double(0.4f);
+  EXPECT_NEAR((plus - 0.5) / (minus - 0.5), (1 + e) / (1 - e), 0.05 * (1 + e) / (1 - e));
+}
+
+TEST(InterfaceMotion, AMoveThatWouldInvertATetrahedronIsClampedNotApplied) {
+  TetComplex c = tetrahedralize_surface(icosphere(2, 0.5), TetSettings{}, "s.json", "/objects/0");
+  // Growth far beyond the room the padding gives (the box is 0.5 m away): vertices run into
+  // the fixed box's tetrahedra and must stop, never invert one.
+  const GrowthFunction g = growth_of(3.0);
+  long clamped = 0;
+  for (int k = 0; k < 4; ++k) {
+    clamped += advance_interface(c, g, 0.5 * k, 0.5 * (k + 1)).clamped;
+    ASSERT_EQ(c.first_inverted(), -1) << "step " << k;
+  }
+  EXPECT_GT(clamped, 0);
+}
