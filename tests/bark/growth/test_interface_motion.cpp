@@ -5,6 +5,9 @@
 
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/growth/interface_motion.h"
+#include "bark/growth/interface_refinement.h"
+
+#include <map>
 
 using namespace phellem;
 using namespace phellem::bark;
@@ -75,4 +78,46 @@ TEST(InterfaceMotion, AMoveThatWouldInvertATetrahedronIsClampedNotApplied) {
     ASSERT_EQ(c.first_inverted(), -1) << "step " << k;
   }
   EXPECT_GT(clamped, 0);
+}
+
+namespace {
+
+// Every interface edge is shared by exactly two interface faces, once in each direction: a
+// closed, consistently oriented 2-manifold.
+bool closed_manifold(const TetComplex& c) {
+  std::map<std::pair<uint32_t, uint32_t>, int> directed;
+  for (const auto& f : c.interface_faces())
+    for (int e = 0; e < 3; ++e) ++directed[{f[size_t(e)], f[size_t(e + 1) % 3]}];
+  for (const auto& [edge, n] : directed)
+    if (n != 1 || directed.count({edge.second, edge.first}) != 1 || directed.at({edge.second, edge.first}) != 1) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST(InterfaceRefinement, SplitsKeepTheGrowingSphereFineClosedAndPositive) {
+  const double r0 = 0.3;
+  TetComplex c = tetrahedralize_surface(icosphere(2, r0), TetSettings{}, "s.json", "/objects/0");
+  double max0 = 0;
+  for (const auto& e : interface_edges(c)) max0 = std::max(max0, (c.points[e[0]] - c.points[e[1]]).norm());
+  const GrowthFunction g = growth_of(1.0);
+  long splits = 0, shortened = 0;
+  for (int k = 0; k < 10; ++k) {  // to about 0.48 m: edges would stretch by 1.6 without splits
+    const InterfaceStepStats st = advance_interface(c, g, 0.02 * k, 0.02 * (k + 1));
+    shortened += st.shortened + st.clamped;
+    splits += split_long_interface_edges(c, max0);
+    ASSERT_EQ(c.first_inverted(), -1) << "step " << k;
+    ASSERT_TRUE(closed_manifold(c)) << "step " << k;
+  }
+  EXPECT_GT(splits, 100);
+  for (const auto& e : interface_edges(c)) EXPECT_LE((c.points[e[0]] - c.points[e[1]]).norm(), max0 + 1e-12);
+  // Still a sphere, roughly: every interface vertex near the grown radius. Not yet tight: a
+  // few moves per step are shortened or clamped (about 10 of 600) by outside tetrahedra whose corners are
+  // all on the interface, which the flips of deformable simplicial complexes (not written
+  // yet) would remove; those vertices lag. Measured: 0.031 m against an edge bound of 0.097.
+  const double r = r0 + g.cumulative(0.2);
+  double worst = 0;
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i]) worst = std::max(worst, std::abs(c.points[i].norm() - r));
+  EXPECT_LT(worst, 0.4 * max0) << "edge bound " << max0 << ", " << shortened << " moves shortened or clamped";
 }

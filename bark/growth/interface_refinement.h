@@ -1,0 +1,21 @@
+// Refinement of the growing interface (deformable simplicial complexes, after Misztal and
+// Bærentzen; Kratt et al., sec. 3): as the cambium expands its edges stretch, and an interface
+// edge longer than the band's upper bound is split. Every tetrahedron around the edge splits in
+// two with its label. The new vertex goes where the ends' normals say the smooth surface is
+// (half of Phong tessellation's pull to their tangent planes), or on the chord's midpoint —
+// which leaves both halves of a positive tetrahedron positive — when that would invert one.
+// Not yet here: coarsening (collapses of short edges) and flips.
+#pragma once
+
+#include "bark/growth/tet_complex.h"
+
+namespace phellem::bark {
+
+// Splits interface edges longer than `max_length` (m), longest first, until none is or
+// `max_splits` were made; returns the number of splits. Deterministic.
+long split_long_interface_edges(TetComplex& c, double max_length, long max_splits = 1000000);
+
+// The interface's edges (each once, smaller index first).
+std::vector<std::array<uint32_t, 2>> interface_edges(const TetComplex& c);
+
+}  // namespace phellem::bark
