@@ -70,6 +70,12 @@ int run_preview(const cli::Options& o) {
   std::string why;
   auto gl = preview::HeadlessGl::create(&why);
   if (!gl) throw std::runtime_error("no OpenGL 4.5 context for the preview: " + why);
+  const int max_size = gl->max_framebuffer_size();
+  if (l.width > max_size || l.height > max_size)
+    throw UserError("", o.width ? "--res" : "render.resolution",
+                    "the preview's OpenGL (" + gl->renderer() + ") draws at most " + std::to_string(max_size) + "×" +
+                        std::to_string(max_size) + " pixels; asked for " + std::to_string(l.width) + "×" +
+                        std::to_string(l.height));
   const preview::PreviewScene scene = preview::build_preview_scene(l.desc, bark);
   preview::PreviewRenderer renderer(scene);
   preview::PreviewSettings settings;

@@ -3,6 +3,8 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <algorithm>
+
 namespace phellem::preview {
 
 std::unique_ptr<HeadlessGl> HeadlessGl::create(std::string* why) {
@@ -43,6 +45,16 @@ int HeadlessGl::max_tessellation_level() const {
   GLint m = 0;
   glGetIntegerv(GL_MAX_TESS_GEN_LEVEL, &m);
   return m;
+}
+
+int HeadlessGl::max_framebuffer_size() const {
+  GLint texture = 0, renderbuffer = 0, viewport[2] = {0, 0}, width = 0, height = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &width);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &height);
+  return std::min({texture, renderbuffer, viewport[0], viewport[1], width, height});
 }
 
 }  // namespace phellem::preview

@@ -18,6 +18,9 @@ class HeadlessGl {
 
   std::string renderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
   int max_tessellation_level() const;
+  // The largest frame the preview can draw into: the smaller of the texture, renderbuffer and
+  // viewport limits.
+  int max_framebuffer_size() const;
 
  private:
   HeadlessGl() = default;

@@ -93,6 +93,7 @@ size_t PreviewScene::triangles() const {
 namespace {
 
 constexpr float kPatchSize = 0.02f;  // m
+constexpr long long kMaxPresubdividedTriangles = 4000000;  // patches of one stress object
 
 PreviewObject from_mesh(const MeshData& m) {
   PreviewObject o;
@@ -150,6 +151,10 @@ PreviewObject stress_preview_object(const bark::CrackedMesh& cracked, std::share
   d.target = kPresubdivideHalfWidths * std::max(look.min_width, 1e-4f);
   d.max_rate = 64;
   d.refine_edge = [surface](const Vec3f& a, const Vec3f& b) { return surface->reaches(a, b); };
+  // Bounded: a mesh cracked all over at a fine width would otherwise make billions of patches;
+  // past the budget the pre-subdivision coarsens (the tessellator still refines up to 64).
+  const DisplacementFn none = [](const Vec2f&, const Vec3f&) { return 0.0f; };
+  while (estimate_triangles(base, none, d) > kMaxPresubdividedTriangles && d.target < 1e3f) d.target *= 2;
   const MeshData fine = dice(base, [](const Vec2f&, const Vec3f&, const Vec3f&, Vec4f*) { return 0.0f; }, d);
   PreviewObject p = from_mesh(fine);
   p.normals = fine.normals;

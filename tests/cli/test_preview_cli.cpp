@@ -80,6 +80,7 @@ TEST(PreviewCli, MistakesAreExit2WithTheirReason) {
   expect_exit2("preview " + scene + " --max-level 65 --snapshot " + dir + "/s.png", "must lie in [1, 64]");
   expect_exit2("preview " + scene + " --edge-px nan --snapshot " + dir + "/s.png", "--edge-px");
   expect_exit2("preview " + scene + " --spp 4 --snapshot " + dir + "/s.png", "not an option of preview");
+  expect_exit2("preview " + scene + " --res 20000x100 --snapshot " + dir + "/s.png", "draws at most");
   // Without a display the window cannot open: said so, with the headless alternative.
   const auto r = test::run_command("env -u DISPLAY -u WAYLAND_DISPLAY " PHELLEM_BINARY " preview " + scene + " --frames 1 --quiet 2>&1");
   EXPECT_EQ(r.exit_code, 2) << r.output;
