@@ -23,7 +23,10 @@ GLuint buffer(GLenum target, const std::vector<T>& data) {
 }  // namespace
 
 PreviewRenderer::PreviewRenderer(const PreviewScene& scene) : scene_(scene) {
-  for (const auto& o : scene.objects) program_for(o, true), program_for(o, false);  // compiled up front, not mid-frame
+  for (const auto& o : scene.objects) {  // compiled up front, not mid-frame
+    program_for(o, true);
+    program_for(o, false);
+  }
   background_ = GlProgram::screen("background.frag");
   overlay_ = GlProgram::screen("overlay.frag");
   glCreateVertexArrays(1, &empty_vao_);
