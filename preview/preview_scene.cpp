@@ -184,13 +184,18 @@ PreviewObject tree_part(const TreePart& part, const DisplacementFn& disp, std::s
   for (int j = 0; j <= nv; ++j)
     for (int i = 0; i <= nu; ++i) {
       const float u = float(i) / nu, v = float(j) / nv;
+      o.params.emplace_back(u, v);
+      if (i == nu) {  // the seam: bitwise the first column's point, so both sides tessellate alike
+        o.positions.push_back(o.positions[size_t(j) * size_t(nu + 1)]);
+        o.normals.push_back(o.normals[size_t(j) * size_t(nu + 1)]);
+        continue;
+      }
       const double theta = 2.0 * M_PI * double(u);
       const Vec3f p = part.cylinder->position(v, theta).cast<float>();
       const Vec3f n = part.cylinder->normal(v, theta).cast<float>();
       const float d = disp ? disp(Vec2f(u, v * L), p) : 0.0f;
       o.positions.push_back(p + n * d);
       o.normals.push_back(n);
-      o.params.emplace_back(u, v);
     }
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
