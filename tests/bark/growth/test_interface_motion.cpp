@@ -5,6 +5,7 @@
 
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/growth/interface_motion.h"
+#include "bark/growth/growth_rings.h"
 #include "bark/growth/interface_refinement.h"
 
 #include <map>
@@ -120,4 +121,34 @@ TEST(InterfaceRefinement, SplitsKeepTheGrowingSphereFineClosedAndPositive) {
   for (size_t i = 0; i < c.points.size(); ++i)
     if (c.on_interface[i]) worst = std::max(worst, std::abs(c.points[i].norm() - r));
   EXPECT_LT(worst, 0.4 * max0) << "edge bound " << max0 << ", " << shortened << " moves shortened or clamped";
+}
+
+TEST(GrowthRings, RingsOfAGrowingSphereNestInEveryCrossSection) {
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.4), TetSettings{}, "s.json", "/objects/0");
+  const GrowthFunction g = growth_of(1.0);
+  std::vector<GrowthRing> rings{record_ring(c, 0)};
+  for (int k = 1; k <= 6; ++k) {
+    advance_interface(c, g, 0.01 * (k - 1), 0.01 * k);
+    if (k % 2 == 0) rings.push_back(record_ring(c, k));  // a ring every 2 steps
+  }
+  ASSERT_EQ(rings.size(), 4u);
+  EXPECT_EQ(rings.back().faces.size(), rings.front().faces.size());
+  for (const Eigen::Vector3d& n : {Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 1, 0).normalized()}) {
+    // Each ring's trace is a closed polygon around the centre; ring k's nearest point lies
+    // beyond ring k − 1's farthest: they nest and never intersect.
+    double previous_outer = 0;
+    for (const auto& r : rings) {
+      const auto segments = slice_ring(r, Eigen::Vector3d(0, 0.05, 0), n);
+      ASSERT_GT(segments.size(), 20u);
+      double inner = 1e9, outer = 0;
+      for (const auto& s : segments)
+        for (const auto& p : s) {
+          const double radial = (p - Eigen::Vector3d(0, 0, 0)).norm();
+          inner = std::min(inner, radial);
+          outer = std::max(outer, radial);
+        }
+      EXPECT_GT(inner, previous_outer) << "ring at step " << r.step;
+      previous_outer = outer;
+    }
+  }
 }
