@@ -12,6 +12,7 @@
 #include "scene/environment_image.h"
 #include "scene/sky_model.h"
 #include "scene/mesh_source.h"
+#include "scene/object_meshes.h"
 #include "scene/tree_surface.h"
 
 namespace phellem::preview {
@@ -108,36 +109,6 @@ PreviewObject from_mesh(const MeshData& m) {
   o.crack_near.assign(o.positions.size(), 0.0f);
   o.indices = m.indices;
   return o;
-}
-
-MeshData plane_mesh(const ObjectDesc& o) {
-  const Frame f(o.normal);
-  MeshData m;
-  const float hx = 0.5f * o.size.x(), hy = 0.5f * o.size.y();
-  for (const Vec2f& c : {Vec2f(-hx, -hy), Vec2f(hx, -hy), Vec2f(hx, hy), Vec2f(-hx, hy)}) {
-    m.positions.push_back(o.point + f.s * c.x() + f.t * c.y());
-    m.normals.push_back(o.normal);
-  }
-  m.indices = {0, 1, 2, 0, 2, 3};
-  return m;
-}
-
-MeshData sphere_mesh(const Vec3f& c, float r) {
-  MeshData m;
-  const int nu = 48, nv = 24;
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i) {
-      const float th = kPi * float(j) / nv, ph = kTwoPi * float(i) / nu;
-      const Vec3f n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
-      m.positions.push_back(c + r * n);
-      m.normals.push_back(n);
-    }
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const uint32_t a = uint32_t(j * (nu + 1) + i), b = a + 1, d = a + uint32_t(nu) + 1, e = d + 1;
-      m.indices.insert(m.indices.end(), {a, e, b, a, d, e});
-    }
-  return m;
 }
 
 }  // namespace
@@ -285,7 +256,7 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
     std::vector<PreviewObject> made;
     switch (o.type) {
       case ObjectType::Sphere:
-        made.push_back(from_mesh(sphere_mesh(o.center, o.radius)));
+        made.push_back(from_mesh(sphere_mesh(o.center, o.radius, 48, 24)));  // fewer patches: the tessellator refines
         break;
       case ObjectType::Plane:
         made.push_back(from_mesh(plane_mesh(o)));

@@ -32,9 +32,11 @@ bool all_positive(const TetComplex& c, const std::vector<uint32_t>& tets) {
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c) {
+std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c) { return interface_normals(c, c.interface_faces()); }
+
+std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces) {
   std::vector<Eigen::Vector3d> n(c.points.size(), Eigen::Vector3d::Zero());
-  for (const auto& f : c.interface_faces()) {
+  for (const auto& f : faces) {
     const Eigen::Vector3d a = (c.points[f[1]] - c.points[f[0]]).cross(c.points[f[2]] - c.points[f[0]]);  // 2 × area × normal
     for (uint32_t v : f) n[v] += a;
   }

@@ -23,7 +23,9 @@ struct InterfaceStepStats {
   long smoothed = 0;    // free vertices moved by the smoothing
 };
 
-// The area-weighted outward normals of the interface faces at each point (0 elsewhere).
+// The area-weighted outward normals of the interface faces at each point (0 elsewhere), from
+// `faces` = c.interface_faces() when the caller has them already.
+std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces);
 std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c);
 
 // Moves the interface from age t0 to age t1 (years). Deterministic: the same complex and

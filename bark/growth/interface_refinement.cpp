@@ -19,25 +19,32 @@ bool positive(const TetComplex& c, const std::array<uint32_t, 4>& t) {
 
 }  // namespace
 
-std::vector<std::array<uint32_t, 2>> interface_edges(const TetComplex& c) {
+namespace {
+
+std::vector<std::array<uint32_t, 2>> edges_of(const std::vector<std::array<uint32_t, 3>>& faces) {
   std::set<std::array<uint32_t, 2>> edges;
-  for (const auto& f : c.interface_faces())
+  for (const auto& f : faces)
     for (int e = 0; e < 3; ++e) edges.insert({std::min(f[size_t(e)], f[size_t(e + 1) % 3]), std::max(f[size_t(e)], f[size_t(e + 1) % 3])});
   return {edges.begin(), edges.end()};
 }
+
+}  // namespace
+
+std::vector<std::array<uint32_t, 2>> interface_edges(const TetComplex& c) { return edges_of(c.interface_faces()); }
 
 long split_long_interface_edges(TetComplex& c, double max_length, long max_splits) {
   long splits = 0;
   for (;;) {
     // Long edges of this pass, longest first (ties by index: deterministic).
+    const std::vector<std::array<uint32_t, 3>> faces = c.interface_faces();  // once a pass: edges and normals
     std::vector<std::pair<double, std::array<uint32_t, 2>>> todo;
-    for (const auto& e : interface_edges(c)) {
+    for (const auto& e : edges_of(faces)) {
       const double len = (c.points[e[0]] - c.points[e[1]]).norm();
       if (len > max_length) todo.push_back({-len, e});
     }
     if (todo.empty() || splits >= max_splits) return splits;
     std::sort(todo.begin(), todo.end());
-    const std::vector<Eigen::Vector3d> normals = interface_normals(c);
+    const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
     std::vector<std::vector<uint32_t>> around(c.points.size());
     for (uint32_t t = 0; t < c.tets.size(); ++t)
       for (uint32_t v : c.tets[t]) around[v].push_back(t);
