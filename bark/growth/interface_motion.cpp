@@ -53,7 +53,7 @@ InterfaceStepStats advance_interface(TetComplex& c, const GrowthFunction& growth
   // time in index order, each checked against its own tetrahedra: deterministic, and a
   // vertex never validates against a neighbour's half-made move.
   for (uint32_t v = 0; v < c.points.size(); ++v) {
-    if (!c.on_interface[v] || normals[v].squaredNorm() == 0) continue;
+    if (!c.on_interface[v] || c.frozen[v] || normals[v].squaredNorm() == 0) continue;
     const Eigen::Vector3d start = c.points[v];
     const double d = growth.thickening(t0, t1, start.cast<float>(), normals[v].cast<float>());
     if (!(d != 0)) continue;
@@ -77,7 +77,7 @@ InterfaceStepStats advance_interface(TetComplex& c, const GrowthFunction& growth
   }
   // Smoothing of the free vertices: towards the mean of their tetrahedra's other corners.
   for (uint32_t v = 0; v < c.points.size(); ++v) {
-    if (c.on_interface[v] || c.on_box[v] || around[v].empty()) continue;
+    if (c.on_interface[v] || c.on_box[v] || c.frozen[v] || around[v].empty()) continue;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     int n = 0;
     for (uint32_t t : around[v])

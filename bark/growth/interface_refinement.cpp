@@ -53,10 +53,7 @@ long split_long_interface_edges(TetComplex& c, double max_length, long max_split
       if (splits >= max_splits) break;
       const uint32_t a = e[0], b = e[1];
       if (touched[a] || touched[b]) continue;  // its tetrahedra changed in this pass: next pass
-      const uint32_t m = uint32_t(c.points.size());
-      c.points.push_back(0.5 * (c.points[a] + c.points[b]));
-      c.on_interface.push_back(1);
-      c.on_box.push_back(0);
+      const uint32_t m = c.add_point_between(a, b, 0.5);
       around.emplace_back();
       touched.push_back(1);
       std::vector<uint32_t> shared;

@@ -76,6 +76,17 @@ std::vector<std::array<uint32_t, 3>> TetComplex::interface_faces() const {
   return out;
 }
 
+uint32_t TetComplex::add_point_between(uint32_t a, uint32_t b, double s) {
+  const uint32_t m = uint32_t(points.size());
+  points.push_back((1 - s) * points[a] + s * points[b]);
+  on_interface.push_back(on_interface[a] && on_interface[b]);
+  on_box.push_back(on_box[a] && on_box[b]);
+  frozen.push_back(frozen[a] && frozen[b]);
+  if (!uv.empty()) uv.push_back((1 - s) * uv[a] + s * uv[b]);
+  source_vertex.push_back(-1);
+  return m;
+}
+
 double TetComplex::volume(uint8_t which) const {
   double v = 0;
   for (size_t t = 0; t < tets.size(); ++t)
@@ -174,6 +185,14 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& s, 
   for (size_t i = 0; i < c.points.size(); ++i)
     for (int k = 0; k < 3; ++k)
       if (c.points[i][k] == lo[k] || c.points[i][k] == hi[k]) c.on_box[i] = 1;
+  c.frozen.assign(c.points.size(), 0);
+  // TetGen keeps the input points first and in order (switch Y adds none on the facets).
+  c.source_vertex.assign(c.points.size(), -1);
+  for (size_t i = 0; i < n; ++i) c.source_vertex[i] = int32_t(i);
+  if (!surface.uvs.empty()) {
+    c.uv.assign(c.points.size(), Eigen::Vector2d::Zero());
+    for (size_t i = 0; i < n; ++i) c.uv[i] = surface.uvs[i].cast<double>();
+  }
   return c;
 }
 

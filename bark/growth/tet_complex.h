@@ -26,9 +26,22 @@ struct TetSettings {
 struct TetComplex {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<uint32_t, 4>> tets;  // positively oriented (orient3d > 0)
-  std::vector<uint8_t> label;                 // per tet: 1 inside, 0 outside
+  std::vector<uint8_t> label;                 // per tet: kInside, kOutside (or kObstacle)
   std::vector<uint8_t> on_interface;          // per point: 1 if a vertex of an interface face
   std::vector<uint8_t> on_box;                // per point: 1 on the padding box's boundary
+  std::vector<uint8_t> frozen;                // per point: 1 if it no longer moves (obstacle, contact)
+  // Per point: the texture coordinates carried by the interface (sec. 4.6; empty when the
+  // surface has none), and the input surface's vertex it started as (−1 for points TetGen or
+  // the refinement added): vertex identity across steps (thesis sec. 5).
+  std::vector<Eigen::Vector2d> uv;
+  std::vector<int32_t> source_vertex;
+
+  static constexpr uint8_t kOutside = 0, kInside = 1, kObstacle = 2;
+
+  // Appends a point on the segment a–b at parameter s (0: a), interpolating the per-point
+  // attributes (uv) and taking the flags both ends share; returns its index. Every change of
+  // the complex that adds points goes through here so no per-point array falls out of step.
+  uint32_t add_point_between(uint32_t a, uint32_t b, double s);
 
   // The faces between labels, oriented outwards from the inside (the bark surface).
   std::vector<std::array<uint32_t, 3>> interface_faces() const;
