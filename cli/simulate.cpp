@@ -10,6 +10,7 @@
 
 #include "cli/memory_check.h"
 #include "cli/outputs.h"
+#include "cli/simulate_growth.h"
 #include "cli/simulate_stress.h"
 #include "io/height_image.h"
 #include "scene/scene_parser.h"
@@ -112,9 +113,11 @@ int run_simulate(const cli::Options& o) {
     crossings += long(sim.bark().crossings().size());
   }
   const StressRunTotals stress = simulate_stress_objects(o, desc, dir, out);
-  if (outputs == 0 && stress.objects == 0)
+  const GrowthRunTotals growth = simulate_growth_objects(o, desc, dir, out);
+  if (outputs == 0 && stress.objects == 0 && growth.objects == 0)
     throw UserError(o.scene, "/objects",
-                    "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"})");
+                    "no object has a \"bark\" to simulate (trees: {\"model\": \"strips\"}; meshes: {\"model\": \"stress\"}) "
+                    "or a \"growth\"");
   if (!o.stats.empty()) {
     nlohmann::json j;
     if (stress.objects > 0) {
@@ -155,6 +158,18 @@ int run_simulate(const cli::Options& o) {
       j["time_s"]["dress"] = t_dress;
       j["time_s"]["mesh"] = t_mesh;
       if (stress.objects > 0) j["stress_outputs"] = stress.outputs;
+    }
+    if (growth.objects > 0) {
+      if (!j.contains("model")) j["model"] = "growth";
+      j["growth"] = {{"objects", growth.objects},
+                     {"steps", growth.steps},
+                     {"vertices_start", growth.vertices_start},
+                     {"vertices_end", growth.vertices_end},
+                     {"outputs", growth.outputs}};
+      j["time_s"]["total"] = since(t0);
+      j["time_s"]["growth"] = growth.t_growth;
+      j["time_s"]["growth_setup"] = growth.t_setup;
+      j["time_s"]["growth_crack"] = growth.t_crack;
     }
     write_json_output(out, "--stats", o.stats, j);
   }

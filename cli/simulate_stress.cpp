@@ -18,7 +18,7 @@ StressRunTotals simulate_stress_objects(const cli::Options& o, const SceneDesc& 
   StressRunTotals totals;
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
     const ObjectDesc& obj = desc.objects[oi];
-    if (!obj.stress_bark) continue;
+    if (!obj.stress_bark || obj.growth) continue;  // grown objects: simulate_growth.cpp
     const std::string name = obj.name.empty() ? "mesh" + std::to_string(oi) : obj.name;
     const StressRun run = run_stress_object(desc, oi, o.seed, !o.quiet);
     const bark::CrackedMesh& result = *run.cracked;

@@ -144,8 +144,9 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
           c.jobs.push_back(stress_job(desc, o, *bark_of(bark, oi, o).cracked, mat, object_id));
           break;
         }
-        if (o.procedural) {
-          MeshData w = to_mesh_data(object_trimesh(o));
+        if (o.procedural || o.growth) {
+          // A grown mesh is the surface of its last step (world space, as object_trimesh's).
+          MeshData w = to_mesh_data(o.growth ? *bark_of(bark, oi, o).grown : object_trimesh(o));
           compute_vertex_normals(w);
           if (o.displacement.type != DisplacementDesc::Type::None)
             add_job(mat, object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement), nullptr);

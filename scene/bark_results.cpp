@@ -3,18 +3,31 @@
 #include <chrono>
 #include <optional>
 
+#include "scene/growth_run.h"
 #include "scene/stress_bark_run.h"
 #include "scene/strip_bark_tree.h"
 #include "util/hash.h"
 
 namespace phellem {
 
-bool has_simulated_bark(const ObjectDesc& o) { return o.stress_bark || (o.type == ObjectType::Tree && o.tree.strip_bark); }
+bool has_simulated_bark(const ObjectDesc& o) {
+  return o.stress_bark || o.growth || (o.type == ObjectType::Tree && o.tree.strip_bark);
+}
+
+std::shared_ptr<const bark::CrackedMesh> crack_grown_surface(const SceneDesc& desc, size_t object,
+                                                             const bark::TriMesh& grown, bool progress) {
+  const ObjectDesc& o = desc.objects.at(object);
+  if (!o.stress_bark) return nullptr;
+  return run_stress_object(desc, object, std::nullopt, progress, &grown).cracked;
+}
 
 ObjectBark simulate_object_bark(const SceneDesc& desc, size_t object, bool progress) {
   const ObjectDesc& o = desc.objects.at(object);
   ObjectBark out;
-  if (o.stress_bark) {
+  if (o.growth) {
+    out.grown = run_growth_object(desc, object, progress).surface;
+    out.cracked = crack_grown_surface(desc, object, *out.grown, progress);
+  } else if (o.stress_bark) {
     out.cracked = run_stress_object(desc, object, std::nullopt, progress).cracked;
   } else if (o.type == ObjectType::Tree && o.tree.strip_bark) {
     TreeStripSimulation sim(o, object);

@@ -19,6 +19,7 @@ namespace phellem {
 struct ObjectBark {
   std::vector<std::shared_ptr<const bark::FieldBarkSurface>> strip_parts;  // strip bark: one per tree part
   std::shared_ptr<const bark::CrackedMesh> cracked;                        // stress bark
+  std::shared_ptr<const bark::TriMesh> grown;  // cambial growth: the surface at the last step (world space)
 };
 
 struct BarkResults {
@@ -31,10 +32,14 @@ struct BarkResults {
   }
 };
 
-// Whether object `o` has bark for the bark stage to simulate.
+// Whether object `o` has bark for the bark stage to simulate (or a mesh to grow).
 bool has_simulated_bark(const ObjectDesc& o);
-// The bark of one object (strip bark or stress bark), with progress when asked.
+// The bark of one object (strip bark, stress bark, growth and the stress bark of the grown
+// surface), with progress when asked.
 ObjectBark simulate_object_bark(const SceneDesc& desc, size_t object, bool progress);
+// The stress bark of a grown surface (when the object has stress bark and its growth cracks).
+std::shared_ptr<const bark::CrackedMesh> crack_grown_surface(const SceneDesc& desc, size_t object,
+                                                             const bark::TriMesh& grown, bool progress);
 // The bark of every object that has some, in scene order.
 BarkResults simulate_bark(const SceneDesc& desc, bool progress);
 

@@ -367,6 +367,30 @@ MemoryItem geometry_item(const SceneDesc& desc, int height, const std::map<size_
 
 MemoryItem base_item() { return {"the program itself", kBaseBytes, "", "", ""}; }
 
+// Cambial growth: the tetrahedral complex at the last step, from the input's size and area.
+MemoryItem growth_item(const ObjectDesc& o, size_t oi) {
+  double n_in = 0, area = 0, edge = 0;
+  if (o.procedural) {
+    ObjectDesc coarse = o;
+    coarse.procedural->triangles = std::min(o.procedural->triangles, 2000);
+    const bark::TriMesh t = object_trimesh(coarse);
+    area = trimesh_area(t);
+    n_in = double(std::max(20, o.procedural->triangles)) / 2;
+  } else {
+    const LoadedCounts lc = file_counts(o);
+    n_in = lc.triangles / 2;
+    area = lc.area;
+  }
+  edge = std::sqrt(area / std::max(1.0, 2 * n_in) / 0.4330127);  // the mean edge of that many equilateral triangles
+  MemoryItem m;
+  m.file = o.where.file;
+  m.bytes = estimate_growth_bytes(*o.growth, size_t(n_in), area, edge);
+  m.what = "the cambial growth of " + object_name(o, oi, "mesh") + " (its tetrahedra at the last step)";
+  m.where = path(oi, "/growth/edge_length");
+  m.advice = "raise the growth's edge_length band, or lower its thickness or steps / ring_interval";
+  return m;
+}
+
 }  // namespace
 
 double MemoryMoment::bytes() const {
@@ -415,6 +439,7 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
     }
     for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
       const ObjectDesc& o = desc.objects[oi];
+      if (o.growth) e.moments.push_back({"growing " + object_name(o, oi, "mesh"), {base_item(), growth_item(o, oi)}});
       if (!o.stress_bark) continue;
       e.moments.push_back({"cracking " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"),
                            {base_item(), stress_cost(o, oi).item}});
@@ -451,6 +476,12 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
         field_scratch = std::max(field_scratch, largest * kFieldBytesPerTexel);
       }
       surfaces.push_back(kept);
+    }
+    if (o.growth) {
+      MemoryMoment m{"growing " + object_name(o, oi, "mesh"), {base_item()}};
+      m.items.insert(m.items.end(), surfaces.begin(), surfaces.end());
+      m.items.push_back(growth_item(o, oi));
+      e.moments.push_back(std::move(m));
     }
     if (o.stress_bark) {
       const StressCost c = stress_cost(o, oi);

@@ -16,11 +16,12 @@ namespace phellem {
 bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
   const uint64_t seed = p.seed;
   const double n = std::max(20, p.triangles);
-  if (p.shape == "trunk" || p.shape == "vase") {
+  if (p.shape == "trunk" || p.shape == "vase" || p.shape == "log") {
     // Quads about square: along / around ≈ height / circumference.
     const double aspect = p.height / (2 * double(kPi) * p.radius);
     const int around = std::max(3, int(std::lround(std::sqrt(n / 2 / aspect))));
     const int along = std::max(1, int(std::lround(n / 2 / around)));
+    if (p.shape == "log") return bark::log_mesh(p.radius, p.height, around, along, p.jitter, seed);
     return p.shape == "trunk" ? bark::cylinder_mesh(p.radius, p.height, around, along, p.jitter, seed)
                               : bark::vase_mesh(p.radius, p.height, around, along, p.jitter, seed);
   }

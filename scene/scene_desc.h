@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/material_desc.h"
+#include "scene/growth_desc.h"
 #include "scene/stress_bark_desc.h"
 #include "scene/strip_bark_desc.h"
 #include "util/errors.h"
@@ -105,12 +106,13 @@ struct TreeDesc {
 };
 
 // A mesh made by Phellem instead of read from a file (bark/geometry/procedural_meshes.h):
-// `"procedural": {"shape": "trunk" | "torus_knot" | "vase" | "sheet" | "sphere", ...}`.
+// `"procedural": {"shape": "trunk" | "log" | "torus_knot" | "vase" | "sheet" | "sphere", ...}`
+// (a log is a trunk closed by flat end caps, a closed surface that can grow).
 struct ProceduralMeshDesc {
   std::string shape;
   int triangles = 8000;  // approximate
-  float radius = 0.15f;  // trunk, vase (base), torus knot (overall), sphere
-  float height = 1.0f;   // trunk, vase, sheet (and its width)
+  float radius = 0.15f;  // trunk, log, vase (base), torus knot (overall), sphere
+  float height = 1.0f;   // trunk, log, vase, sheet (and its width)
   float tube = 0.06f;    // torus knot
   float jitter = 0.3f;   // trunk, vase, sheet: vertex jitter (fraction of the spacing)
   uint64_t seed = 1;     // of the jitter
@@ -136,6 +138,8 @@ struct ObjectDesc {
   // mesh or tree: `"bark": {"model": "stress", ...}` (the stress-field cracking model; a tree
   // is tessellated into one triangle mesh of its trunk and branches first)
   std::shared_ptr<const StressBarkDesc> stress_bark;
+  // mesh: `"growth": {...}` (cambial growth before the bark is cracked and rendered)
+  std::shared_ptr<const GrowthDesc> growth;
   TransformDesc transform;
   DisplacementDesc displacement;
   // tree

@@ -364,8 +364,9 @@ BranchDesc parse_branch(const Ctx& c, JsonObject o, int depth) {
 ProceduralMeshDesc parse_procedural(JsonObject o) {
   ProceduralMeshDesc p;
   p.shape = o.string("shape");
-  if (p.shape != "trunk" && p.shape != "torus_knot" && p.shape != "vase" && p.shape != "sheet" && p.shape != "sphere")
-    o.fail("shape", "unknown procedural shape \"" + p.shape + "\"; allowed: trunk, torus_knot, vase, sheet, sphere");
+  if (p.shape != "trunk" && p.shape != "log" && p.shape != "torus_knot" && p.shape != "vase" && p.shape != "sheet" &&
+      p.shape != "sphere")
+    o.fail("shape", "unknown procedural shape \"" + p.shape + "\"; allowed: trunk, log, torus_knot, vase, sheet, sphere");
   if (auto v = o.get("triangles")) {
     p.triangles = v->integer();
     if (p.triangles < 20 || p.triangles > 20000000) v->fail("triangles must be an integer in [20, 20000000]");
@@ -458,6 +459,7 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
         bo.fail("model", "the strip model needs a tree object (generalized cylinders); on meshes use \"stress\"");
       d.stress_bark = std::make_shared<StressBarkDesc>(parse_stress_bark(b->object(), c.base_dir.string(), scene.render.seed));
     }
+    if (auto g = o.get("growth")) d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object()));
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
     d.tree = parse_tree(c, o, scene.render.seed, &d.stress_bark);
@@ -472,6 +474,37 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
   o.finish();
   if (d.type == ObjectType::Tree) d.tree.displacement = d.displacement;
   return d;
+}
+
+// Growth obstacles name other objects, which may come later in the file.
+void resolve_growth_obstacles(SceneDesc& s) {
+  for (size_t oi = 0; oi < s.objects.size(); ++oi) {
+    ObjectDesc& o = s.objects[oi];
+    if (!o.growth) continue;
+    auto g = std::make_shared<GrowthDesc>(*o.growth);
+    for (size_t k = 0; k < g->obstacle_names.size(); ++k) {
+      const std::string& name = g->obstacle_names[k];
+      const std::string where = g->where.path + "/obstacles/" + std::to_string(k);
+      std::string names;
+      long found = -1;
+      for (size_t j = 0; j < s.objects.size(); ++j) {
+        if (s.objects[j].name.empty()) continue;
+        if (s.objects[j].name == name) found = long(j);
+        names += (names.empty() ? "" : ", ") + s.objects[j].name;
+      }
+      if (found < 0)
+        throw UserError(s.file, where, "no object named \"" + name + "\" (named objects: " + (names.empty() ? "none" : names) + ")");
+      const ObjectDesc& ob = s.objects[size_t(found)];
+      if (size_t(found) == oi) throw UserError(s.file, where, "an object cannot be its own obstacle");
+      if (ob.type != ObjectType::Mesh && ob.type != ObjectType::Sphere)
+        throw UserError(s.file, where, "obstacle \"" + name + "\" must be a mesh or sphere object (a closed surface)");
+      if (ob.growth) throw UserError(s.file, where, "obstacle \"" + name + "\" grows itself; obstacles do not grow");
+      for (size_t prior : g->obstacles)
+        if (prior == size_t(found)) throw UserError(s.file, where, "obstacle \"" + name + "\" is listed twice");
+      g->obstacles.push_back(size_t(found));
+    }
+    o.growth = std::move(g);
+  }
 }
 
 }  // namespace
@@ -498,6 +531,7 @@ SceneDesc parse_scene(const std::string& text, const std::string& file, const fs
   if (auto v = root.get("objects"))
     for (auto& e : v->array()) s.objects.push_back(parse_object(c, e.object(), s));
   root.finish();
+  resolve_growth_obstacles(s);
   // A sky without its own sun direction follows the scene's sun.
   for (auto& l : s.lights) {
     if (l.type != LightType::Sky) continue;

@@ -22,6 +22,8 @@ struct StressRun {
   double preprocess_s = 0, simulate_s = 0;
 };
 
-StressRun run_stress_object(const SceneDesc& desc, size_t object_index, std::optional<uint64_t> seed, bool progress);
+// `input`: the surface to crack instead of the object's own (its grown surface), if given.
+StressRun run_stress_object(const SceneDesc& desc, size_t object_index, std::optional<uint64_t> seed, bool progress,
+                            const bark::TriMesh* input = nullptr);
 
 }  // namespace phellem

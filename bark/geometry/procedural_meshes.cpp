@@ -87,6 +87,59 @@ TriMesh cylinder_mesh(double radius, double height, int around, int along, doubl
   return revolved_mesh([radius](double) { return radius; }, height, around, along, jitter, seed);
 }
 
+TriMesh log_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed) {
+  TriMesh m = cylinder_mesh(radius, height, around, along, jitter, seed);
+  const int rings = std::max(1, int(std::lround(around / (2 * kPi))));  // ring spacing ≈ the side's spacing
+  for (int end = 0; end < 2; ++end) {
+    const double y = end ? height : 0.0;
+    const Eigen::Vector3d up(0, end ? 1.0 : -1.0, 0);
+    // Ring 0 is the side's edge row (its vertices i + row · (around + 1), i < around).
+    std::vector<uint32_t> outer;
+    for (int i = 0; i < around; ++i) outer.push_back(uint32_t(i + (end ? along : 0) * (around + 1)));
+    for (int k = 1; k <= rings; ++k) {
+      const double f = 1.0 - double(k) / rings;
+      std::vector<uint32_t> inner;
+      const int n = k == rings ? 1 : std::max(3, int(std::lround(around * f)));
+      for (int i = 0; i < n; ++i) {
+        const double th = 2 * kPi * (i + 0.5 * k) / n;
+        inner.push_back(uint32_t(m.positions.size()));
+        m.positions.emplace_back(radius * f * std::cos(th), y, -radius * f * std::sin(th));
+        m.uvs.emplace_back(th / (2 * kPi), (end ? 1.0 : 0.0) + up.y() * (1 - f) * radius / height);
+      }
+      // Zip the two rings together by angle: both lists of angles unwrapped to increase from
+      // their first vertex (outer at 0, inner just past it), one turn each.
+      auto unwrapped = [&](const std::vector<uint32_t>& ring) {
+        std::vector<double> a;
+        for (uint32_t v : ring) {
+          double x = std::atan2(-m.positions[v].z(), m.positions[v].x());
+          while (!a.empty() && x < a.back()) x += 2 * kPi;
+          while (a.empty() && x < 0) x += 2 * kPi;
+          a.push_back(x);
+        }
+        a.push_back(a.front() + 2 * kPi);
+        return a;
+      };
+      const std::vector<double> A = unwrapped(outer), B = unwrapped(inner);
+      const size_t na = outer.size(), nb = inner.size();
+      for (size_t i = 0, j = 0; i < na || j < nb;) {
+        std::array<uint32_t, 3> t;
+        if (j == nb || (i < na && A[i + 1] <= B[j + 1])) {
+          t = {outer[i], outer[(i + 1) % na], inner[j % nb]};
+          ++i;
+        } else {
+          t = {outer[i % na], inner[(j + 1) % nb], inner[j]};
+          ++j;
+        }
+        const Eigen::Vector3d nrm = (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
+        if (nrm.dot(up) < 0) std::swap(t[1], t[2]);
+        if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) m.triangles.push_back(t);
+      }
+      outer = inner;
+    }
+  }
+  return m;
+}
+
 TriMesh vase_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed) {
   return revolved_mesh(
       [radius](double t) { return radius * (0.55 + 0.45 * std::sin(kPi * std::min(1.0, 1.15 * t)) + 0.25 * t * t); }, height,

@@ -21,6 +21,11 @@ TriMesh icosphere(int subdivisions, double radius);
 // with a seam at θ = 0.
 TriMesh cylinder_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed);
 
+// A closed log: cylinder_mesh closed at y = 0 and y = height by flat caps of concentric rings
+// (fewer vertices towards the centre, so the caps' triangles stay well shaped), outward-facing.
+// The side's seam copies stay unreferenced (weld by position for a closed index mesh).
+TriMesh log_mesh(double radius, double height, int around, int along, double jitter, uint64_t seed);
+
 // The same around a radius profile r(t), t = y / height ∈ [0, 1] (a vase, a flared trunk).
 TriMesh revolved_mesh(const std::function<double(double)>& radius, double height, int around, int along, double jitter,
                       uint64_t seed);

@@ -1,0 +1,123 @@
+#include "bark/growth/cambial_growth.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "bark/growth/interface_curvature.h"
+#include "bark/growth/interface_motion.h"
+#include "bark/growth/interface_refinement.h"
+#include "util/errors.h"
+
+namespace phellem::bark {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The surface as one closed index mesh: vertices at the same position (split at UV seams)
+// welded into the first of them, which keeps its UV; vertices no triangle uses dropped (TetGen
+// would see them as loose points on top of the used ones).
+TriMesh welded(const TriMesh& in) {
+  std::map<std::array<double, 3>, uint32_t> at;
+  TriMesh out;
+  for (const auto& t : in.triangles) {
+    std::array<uint32_t, 3> g{};
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& p = in.positions[t[size_t(k)]];
+      const auto [it, added] = at.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, uint32_t(out.positions.size()));
+      if (added) {
+        out.positions.push_back(p);
+        if (in.has_uvs()) out.uvs.push_back(in.uvs[t[size_t(k)]]);
+      }
+      g[size_t(k)] = it->second;
+    }
+    if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2]) out.triangles.push_back(g);
+  }
+  return out;
+}
+
+size_t interface_vertex_count(const TetComplex& c) {
+  size_t n = 0;
+  for (uint8_t f : c.on_interface) n += f;
+  return n;
+}
+
+}  // namespace
+
+double mean_edge_length(const TriMesh& m) {
+  std::set<std::pair<uint32_t, uint32_t>> edges;
+  for (const auto& t : m.triangles)
+    for (int e = 0; e < 3; ++e)
+      edges.insert(std::minmax(t[size_t(e)], t[size_t(e + 1) % 3]));
+  double sum = 0;
+  for (const auto& [a, b] : edges) sum += (m.positions[a] - m.positions[b]).norm();
+  return edges.empty() ? 0 : sum / double(edges.size());
+}
+
+GrowthSurface extract_interface(const TetComplex& c) {
+  GrowthSurface s;
+  std::map<uint32_t, uint32_t> index;
+  const auto faces = c.interface_faces();
+  for (const auto& f : faces)
+    for (uint32_t v : f) index.emplace(v, 0);
+  for (auto& [p, i] : index) {
+    i = uint32_t(s.point.size());
+    s.point.push_back(p);
+    s.mesh.positions.push_back(c.points[p]);
+    if (!c.uv.empty()) s.mesh.uvs.push_back(c.uv[p]);
+  }
+  for (const auto& f : faces) s.mesh.triangles.push_back({index[f[0]], index[f[1]], index[f[2]]});
+  return s;
+}
+
+CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<TriMesh>& obstacles, const CambialGrowthSettings& s,
+                             const std::string& file, const std::string& where)
+    : settings_(s) {
+  const TriMesh input = welded(surface);
+  const double mean = mean_edge_length(input);
+  if (settings_.edge_max <= 0) settings_.edge_max = 1.5 * mean;
+  if (settings_.edge_min <= 0) settings_.edge_min = 0.4 * settings_.edge_max;
+  const auto t0 = Clock::now();
+  if (!obstacles.empty())
+    throw UserError(file, where + "/obstacles", "obstacles are not supported yet");
+  complex_ = tetrahedralize_surface(input, settings_.tet, file, where);
+  stats_.setup_s = since(t0);
+  stats_.vertices_start = stats_.vertices_end = interface_vertex_count(complex_);
+  stats_.tets_start = stats_.tets_end = complex_.tets.size();
+  if (settings_.ring_interval > 0) rings_.push_back(record_ring(complex_, 0));
+}
+
+double CambialGrowth::age_at(int k) const {
+  const double a = settings_.age_start + (settings_.age_end - settings_.age_start) * double(k) / settings_.steps;
+  // Reversed growth walks the ages from the end back to the start.
+  return settings_.reverse ? settings_.age_end + settings_.age_start - a : a;
+}
+
+double CambialGrowth::age() const { return age_at(step_); }
+
+bool CambialGrowth::step() {
+  if (step_ >= settings_.steps) return false;
+  const auto t0 = Clock::now();
+  // Eq. (1) over [age(k), age(k+1)]: reversed, the second age is the younger one and the
+  // thickening negative (the surface moves inwards).
+  const InterfaceStepStats st = advance_interface(complex_, settings_.function, age_at(step_), age_at(step_ + 1));
+  stats_.moved += st.moved;
+  stats_.shortened += st.shortened;
+  stats_.clamped += st.clamped;
+  // Sec. 4.3: reversed growth is the negated speed plus a small curvature term, which keeps a
+  // shrinking surface from folding where it is concave.
+  if (settings_.reverse) smooth_interface_curvature(complex_, 0.1);
+  stats_.splits += split_long_interface_edges(complex_, settings_.edge_max);
+  ++step_;
+  stats_.steps_s += since(t0);
+  stats_.vertices_end = interface_vertex_count(complex_);
+  stats_.tets_end = complex_.tets.size();
+  if (settings_.ring_interval > 0 && (step_ % settings_.ring_interval == 0 || step_ == settings_.steps))
+    rings_.push_back(record_ring(complex_, step_));
+  return true;
+}
+
+}  // namespace phellem::bark

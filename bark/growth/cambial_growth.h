@@ -1,0 +1,80 @@
+// Cambial growth of a closed surface (Kratt et al., Woodification; Spicker 2014 ch. 5): the
+// surface becomes the interface of a labelled TetGen volume (tet_complex.h) with the
+// obstacles as fixed regions, and each step moves it along its normals by the growth
+// function's thickening over the step (Eq. 1–3, interface_motion.h), then repairs the volume
+// so interface edges stay inside their length band (interface_refinement.h). Every
+// `ring_interval` steps the interface is recorded as a growth ring. Reversed growth (sec. 4.3)
+// runs the ages backwards: the surface shrinks by the thickening it would have grown.
+//
+// The stepper holds the complex between steps so callers can look at each step (time-lapse
+// frames, crack coupling); it never runs a step by itself.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bark/geometry/tri_mesh.h"
+#include "bark/growth/growth_rings.h"
+#include "bark/growth/tet_complex.h"
+#include "bark/growth/weibull_growth.h"
+
+namespace phellem::bark {
+
+struct CambialGrowthSettings {
+  GrowthFunction function;
+  double age_start = 0, age_end = 1;  // years: the ages of step 0 and of the last step
+  int steps = 50;
+  double edge_min = 0, edge_max = 0;  // m: the interface's edge-length band (0: from the input's mean edge)
+  int ring_interval = 10;             // steps between recorded rings (0: none)
+  TetSettings tet;
+  bool reverse = false;  // sec. 4.3: shrink from the surface at age_end back to age_start
+};
+
+struct CambialGrowthStats {
+  size_t vertices_start = 0, vertices_end = 0;  // interface vertices
+  size_t tets_start = 0, tets_end = 0;
+  long moved = 0, shortened = 0, clamped = 0, splits = 0;
+  double setup_s = 0, steps_s = 0;  // TetGen; all steps
+};
+
+// The interface as a compact triangle mesh (outwards), with its UVs when the input had them,
+// and for each of its vertices the complex's point (vertex identity across steps).
+struct GrowthSurface {
+  TriMesh mesh;
+  std::vector<uint32_t> point;
+};
+GrowthSurface extract_interface(const TetComplex& c);
+
+// The mean edge length of a mesh's triangles (each edge counted once).
+double mean_edge_length(const TriMesh& m);
+
+class CambialGrowth {
+ public:
+  // `surface`: closed and consistently oriented (UserError at file/where otherwise);
+  // `obstacles`: closed meshes that do not grow.
+  CambialGrowth(const TriMesh& surface, const std::vector<TriMesh>& obstacles, const CambialGrowthSettings& s,
+                const std::string& file, const std::string& where);
+
+  // One step; false when every step has run.
+  bool step();
+  int steps_done() const { return step_; }
+  int steps_total() const { return settings_.steps; }
+  // The age the surface has now (years).
+  double age() const;
+
+  const TetComplex& complex() const { return complex_; }
+  const std::vector<GrowthRing>& rings() const { return rings_; }
+  const CambialGrowthStats& stats() const { return stats_; }
+  const CambialGrowthSettings& settings() const { return settings_; }
+
+ private:
+  double age_at(int step) const;
+
+  CambialGrowthSettings settings_;
+  TetComplex complex_;
+  std::vector<GrowthRing> rings_;
+  CambialGrowthStats stats_;
+  int step_ = 0;
+};
+
+}  // namespace phellem::bark

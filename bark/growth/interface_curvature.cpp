@@ -1,0 +1,55 @@
+#include "bark/growth/interface_curvature.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include "bark/growth/interface_motion.h"
+
+namespace phellem::bark {
+
+namespace {
+
+bool positive(const TetComplex& c, const std::array<uint32_t, 4>& t) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto p = [&](uint32_t i) { return K::Point_3(c.points[i].x(), c.points[i].y(), c.points[i].z()); };
+  return CGAL::orientation(p(t[0]), p(t[1]), p(t[2]), p(t[3])) == CGAL::POSITIVE;
+}
+
+}  // namespace
+
+long smooth_interface_curvature(TetComplex& c, double rate) {
+  const auto faces = c.interface_faces();
+  const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
+  std::vector<Eigen::Vector3d> sum(c.points.size(), Eigen::Vector3d::Zero());
+  std::vector<int> count(c.points.size(), 0);
+  for (const auto& f : faces)
+    for (int k = 0; k < 3; ++k) {  // each edge of a closed surface is seen twice, once per side
+      sum[f[size_t(k)]] += c.points[f[size_t(k + 1) % 3]];
+      ++count[f[size_t(k)]];
+    }
+  std::vector<std::vector<uint32_t>> around(c.points.size());
+  for (uint32_t t = 0; t < c.tets.size(); ++t)
+    for (uint32_t v : c.tets[t]) around[v].push_back(t);
+  std::vector<Eigen::Vector3d> target(c.points.size());
+  for (size_t v = 0; v < c.points.size(); ++v)
+    if (count[v] > 0) {
+      const Eigen::Vector3d lap = sum[v] / count[v] - c.points[v];
+      target[v] = c.points[v] + rate * normals[v].dot(lap) * normals[v];
+    }
+  long moved = 0;
+  for (uint32_t v = 0; v < c.points.size(); ++v) {
+    if (count[v] == 0 || c.frozen[v]) continue;
+    const Eigen::Vector3d start = c.points[v];
+    Eigen::Vector3d delta = target[v] - start;
+    for (int h = 0; h < 4; ++h, delta *= 0.5) {
+      c.points[v] = start + delta;
+      bool ok = true;
+      for (uint32_t t : around[v]) ok = ok && positive(c, c.tets[t]);
+      if (ok) break;
+      c.points[v] = start;
+    }
+    moved += c.points[v] != start;
+  }
+  return moved;
+}
+
+}  // namespace phellem::bark

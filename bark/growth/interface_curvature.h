@@ -1,0 +1,16 @@
+// The curvature term of reversed growth (Kratt et al., sec. 4.3): negated growth alone lets a
+// shrinking surface fold into itself where it is concave, so each step also moves every
+// interface vertex a fraction of the way to the mean of its interface neighbours, along its
+// normal only (a mean-curvature flow step: the surface does not slide, so UVs stay put). Each
+// move is halved or dropped if it would invert a tetrahedron.
+#pragma once
+
+#include "bark/growth/tet_complex.h"
+
+namespace phellem::bark {
+
+// `rate` in [0, 1]: the fraction of the normal component of (neighbour mean − vertex).
+// Returns the number of vertices moved. Deterministic (Jacobi: all targets from the old positions).
+long smooth_interface_curvature(TetComplex& c, double rate);
+
+}  // namespace phellem::bark

@@ -1,0 +1,93 @@
+#include "scene/growth_desc.h"
+
+#include <cmath>
+
+#include "scene/json_reader.h"
+
+namespace phellem {
+
+namespace {
+
+float in_range(const JsonValue& v, float lo, float hi, const std::string& what) {
+  const float x = v.number();
+  if (!(x >= lo && x <= hi)) v.fail(what);
+  return x;
+}
+
+bark::GrowthStroke parse_stroke(JsonObject o) {
+  bark::GrowthStroke s;
+  s.point = o.vec3("point");
+  if (auto v = o.get("radius")) s.radius = v->positive();
+  if (auto v = o.get("value")) s.value = in_range(*v, -1, 1000, "value must lie in [-1, 1000] (added to the speed factor; -1 stops growth at the point)");
+  o.finish();
+  return s;
+}
+
+}  // namespace
+
+GrowthDesc parse_growth(JsonObject o) {
+  GrowthDesc d;
+  d.where = {o.file(), o.path()};
+  bark::CambialGrowthSettings& s = d.settings;
+  bark::GrowthFunction& f = s.function;
+  if (auto v = o.get("steps")) s.steps = v->integer(1, 100000);
+  double years = 20, age_start = 0;
+  if (auto v = o.get("years")) years = in_range(*v, 1e-6f, 1e6f, "years must lie in (0, 1e6] (the span of ages simulated)");
+  if (auto v = o.get("age_start")) age_start = in_range(*v, 0, 1e6f, "age_start must lie in [0, 1e6] years");
+  s.age_start = age_start;
+  s.age_end = age_start + years;
+  f.age_scale = 30;
+  if (auto v = o.get("age_scale")) f.age_scale = in_range(*v, 1e-6f, 1e6f, "age_scale must lie in (0, 1e6] years (years per unit of the Weibull age t)");
+  if (auto v = o.get("weibull_c")) f.weibull_c = in_range(*v, 1e-3f, 20, "weibull_c must lie in [0.001, 20] (the shape c of Eq. 2)");
+  if (auto v = o.get("thickness")) f.thickness = in_range(*v, 0, 100, "thickness must lie in [0, 100] m (the total thickening S(inf) = 1 maps to)");
+  if (auto v = o.get("eccentricity"))
+    f.eccentricity = in_range(*v, -0.99f, 0.99f, "eccentricity must lie in [-0.99, 0.99] (e of Eq. 3)");
+  if (auto v = o.get("eccentricity_direction")) {
+    const Vec3f dir = v->vec3();
+    if (!(dir.norm() > 1e-6f)) v->fail("eccentricity_direction must be a non-zero vector");
+    f.eccentricity_direction = dir.normalized();
+  }
+  if (auto v = o.get("strokes"))
+    for (auto& e : v->array()) f.strokes.push_back(parse_stroke(e.object()));
+  if (auto v = o.get("obstacles")) {
+    for (auto& e : v->array()) d.obstacle_names.push_back(e.string());
+  }
+  if (auto v = o.get("ring_interval")) s.ring_interval = v->integer(0, 100000);
+  if (auto v = o.get("cracks")) d.cracks = v->boolean();
+  if (auto v = o.get("edge_length")) {
+    const Vec2f band = v->vec2();
+    if (!(band.x() > 0 && band.y() <= 100 && band.x() * 2 <= band.y()))
+      v->fail("edge_length must be [min, max] in metres with 0 < 2 min <= max <= 100 (a split edge's halves must not be too short)");
+    s.edge_min = band.x();
+    s.edge_max = band.y();
+  }
+  if (auto v = o.get("tetrahedra")) {
+    JsonObject t = v->object();
+    if (auto w = t.get("quality")) s.tet.quality = in_range(*w, 1.1f, 10, "quality must lie in [1.1, 10] (TetGen's radius-edge bound; lower is better shaped, 1.1 is its limit)");
+    if (auto w = t.get("max_volume")) s.tet.max_volume = w->non_negative();
+    if (auto w = t.get("padding")) s.tet.padding = in_range(*w, 0.05f, 10, "padding must lie in [0.05, 10] (the room around the mesh, in its largest extents)");
+    t.finish();
+  }
+  if (auto v = o.get("reverse")) s.reverse = v->boolean();
+  o.finish();
+  return d;
+}
+
+double estimate_growth_bytes(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge) {
+  const auto& s = g.settings;
+  const double edge_max = s.edge_max > 0 ? s.edge_max : 1.5 * mean_edge;
+  const double edge_min = s.edge_min > 0 ? s.edge_min : 0.4 * edge_max;
+  // The area at the end: the surface offset by the whole thickening (a sphere's area ratio
+  // from its own radius, the worst case for a given area), in vertices at the mean of the band.
+  const double r = std::sqrt(std::max(input_area, 1e-12) / (4 * 3.14159265358979));
+  const double grown = r + double(g.settings.function.thickness) * (1 + std::abs(double(s.function.eccentricity)));
+  const double area_end = input_area * (grown / r) * (grown / r);
+  const double edge = 0.5 * (edge_min + edge_max);
+  const double vertices_end = std::max(double(input_vertices), area_end / (0.433 * edge * edge) / 2);
+  // Measured on growth_tree_closeup: about 12 tetrahedra per interface vertex and 350 bytes per
+  // tetrahedron with its adjacency, plus the rings (a copy of the interface each).
+  const double rings = s.ring_interval > 0 ? double(s.steps) / s.ring_interval + 1 : 0;
+  return vertices_end * (12 * 350.0 + rings * 80.0);
+}
+
+}  // namespace phellem

@@ -1,0 +1,46 @@
+// The `"growth": {...}` object of a scene mesh: cambial growth (Kratt et al., Woodification;
+// bark/growth/cambial_growth.h) of the mesh before its bark is cracked and rendered.
+//
+//   "growth": {
+//     "steps": 50,                     // growth steps, [1, 100000]
+//     "years": 20, "age_start": 0,     // the ages simulated (years)
+//     "age_scale": 30,                 // years per unit of the Weibull age t, Eq. (2)
+//     "weibull_c": 2,                  // the species parameter c, (0, 20]
+//     "thickness": 0.05,               // m: the total thickening S(∞) = 1 maps to
+//     "eccentricity": 0.2, "eccentricity_direction": [0, 1, 0],   // Eq. (3)
+//     "strokes": [{"point": [x, y, z], "radius": 0.05, "value": 1}],  // sec. 4.4
+//     "obstacles": ["wire"],           // names of other mesh or sphere objects
+//     "ring_interval": 10,             // steps between growth rings (0: none)
+//     "cracks": true,                  // with stress bark: crack the grown surface
+//     "edge_length": [0.004, 0.01],    // m: the interface's edge band (default: from the mesh)
+//     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5},
+//     "reverse": false                 // sec. 4.3: shrink the mesh back to its age_start
+//   }
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bark/growth/cambial_growth.h"
+#include "util/errors.h"
+
+namespace phellem {
+
+class JsonObject;
+
+struct GrowthDesc {
+  bark::CambialGrowthSettings settings;
+  std::vector<std::string> obstacle_names;
+  std::vector<size_t> obstacles;  // object indices, resolved once every object is parsed
+  bool cracks = true;
+  Location where;  // of the growth object itself
+};
+
+GrowthDesc parse_growth(JsonObject o);
+
+// The memory a growth holds at its end (the tetrahedral complex, adjacency and rings), from
+// the input mesh's vertex count and area and the settings; used to refuse a growth before
+// TetGen runs.
+double estimate_growth_bytes(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge);
+
+}  // namespace phellem

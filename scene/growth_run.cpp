@@ -1,0 +1,60 @@
+#include "scene/growth_run.h"
+
+#include "bark/geometry/procedural_meshes.h"
+#include "scene/mesh_source.h"
+#include "util/errors.h"
+#include "util/progress.h"
+
+namespace phellem {
+
+namespace {
+
+bark::TriMesh obstacle_mesh(const ObjectDesc& o) {
+  if (o.type == ObjectType::Sphere) {
+    bark::TriMesh m = bark::icosphere(4, double(o.radius));
+    for (auto& p : m.positions) p += o.center.cast<double>();
+    return m;
+  }
+  return object_trimesh(o);
+}
+
+}  // namespace
+
+bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi) {
+  const ObjectDesc& obj = desc.objects.at(oi);
+  if (!obj.growth) throw std::logic_error("start_growth: the object does not grow");
+  const GrowthDesc& g = *obj.growth;
+  std::vector<bark::TriMesh> obstacles;
+  for (size_t k : g.obstacles) obstacles.push_back(obstacle_mesh(desc.objects.at(k)));
+  // A file mesh's own problems (not closed) are reported at its file; a procedural one at the object.
+  const std::string file = obj.file.empty() ? desc.file : obj.file;
+  const std::string where = obj.file.empty() ? g.where.path : "meshes";
+  return bark::CambialGrowth(object_trimesh(obj), obstacles, g.settings, file, where);
+}
+
+std::shared_ptr<const bark::TriMesh> grown_surface(const bark::CambialGrowth& g) {
+  return std::make_shared<const bark::TriMesh>(bark::extract_interface(g.complex()).mesh);
+}
+
+GrowthRun run_growth_object(const SceneDesc& desc, size_t oi, bool progress,
+                            const std::function<void(const bark::CambialGrowth&)>& on_step) {
+  const ObjectDesc& obj = desc.objects.at(oi);
+  const std::string name = obj.name.empty() ? "mesh" + std::to_string(oi) : obj.name;
+  bark::CambialGrowth growth = start_growth(desc, oi);
+  {
+    Progress bar("grow " + name, growth.steps_total(), progress);
+    while (growth.step()) {
+      if (on_step) on_step(growth);
+      bar.advance();
+    }
+    bar.finish();
+  }
+  GrowthRun run;
+  run.surface = grown_surface(growth);
+  run.rings = growth.rings();
+  run.stats = growth.stats();
+  run.steps = growth.steps_done();
+  return run;
+}
+
+}  // namespace phellem

@@ -1,0 +1,33 @@
+// Runs the cambial growth of one scene mesh object with `"growth"` (bark/growth/
+// cambial_growth.h): its mesh in world space (file or procedural, the transform applied), the
+// obstacles it names, the steps with a progress bar. Shared by `phellem simulate`,
+// `phellem growth` (one frame per step it is asked for), `phellem slice` and the renderer's
+// bark stage.
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include "bark/growth/cambial_growth.h"
+#include "scene/scene_desc.h"
+
+namespace phellem {
+
+struct GrowthRun {
+  std::shared_ptr<const bark::TriMesh> surface;  // the grown surface (world space, UVs when the input had them)
+  std::vector<bark::GrowthRing> rings;
+  bark::CambialGrowthStats stats;
+  int steps = 0;
+};
+
+// The growth's surface and obstacles, ready for CambialGrowth (errors name the scene or mesh).
+bark::CambialGrowth start_growth(const SceneDesc& desc, size_t object_index);
+
+// All steps; `on_step(growth)` after each (time-lapse frames), when given.
+GrowthRun run_growth_object(const SceneDesc& desc, size_t object_index, bool progress,
+                            const std::function<void(const bark::CambialGrowth&)>& on_step = {});
+
+// The current interface of a growth as a world-space mesh.
+std::shared_ptr<const bark::TriMesh> grown_surface(const bark::CambialGrowth& g);
+
+}  // namespace phellem
