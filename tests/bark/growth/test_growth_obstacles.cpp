@@ -5,9 +5,15 @@
 // obstacle's path.
 #include <gtest/gtest.h>
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <tbb/global_control.h>
+
+#include <limits>
 
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/growth/growth_contact.h"
@@ -107,6 +113,21 @@ GrowthRun grow(TetComplex& c, const GrowthFunction& g, double t_end, int steps, 
   return run;
 }
 
+// The smallest distance from a vertex of component 0 to a face of component 1.
+double closest_between(const TetComplex& c, const InterfaceComponents& parts) {
+  using Triangles = std::vector<K::Triangle_3>;
+  Triangles other;
+  for (const auto& f : c.interface_faces())
+    if (parts.of_point[f[0]] == 1) other.emplace_back(cgal(c.points[f[0]]), cgal(c.points[f[1]]), cgal(c.points[f[2]]));
+  CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>> tree(other.cbegin(),
+                                                                                                          other.cend());
+  tree.accelerate_distance_queries();
+  double closest2 = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (parts.of_point[i] == 0) closest2 = std::min(closest2, tree.squared_distance(cgal(c.points[i])));
+  return std::sqrt(closest2);
+}
+
 // A sphere of radius 0.3 at the origin and a thin square wire along z beside it, 0.06 m from
 // its surface: grown by 0.15 m the sphere would swallow the wire.
 const Eigen::Vector3d kWireLo(0.36, -0.01, -0.2), kWireHi(0.38, 0.01, 0.2);
@@ -148,14 +169,23 @@ TEST(GrowthObstacles, ObstacleRegionsAreLabelledFrozenAndOffTheInterface) {
 TEST(GrowthObstacles, ObstaclePointsNeverMoveAndTheFrontNeverEntersTheWire) {
   const TriMesh sphere = icosphere(3, 0.3);
   const TriMesh wire = box_mesh(kWireLo, kWireHi);
-  TetComplex c = tetrahedralize_surface(sphere, {{wire, "/objects/0/growth/obstacles/0"}}, TetSettings{}, "s.json", "/objects/0");
+  // And a chunky block on the other side, 0.08 m away, whose inside TetGen fills with
+  // tetrahedra that the smoothing could move, were they not frozen.
+  const TriMesh block = box_mesh({-0.5, -0.12, -0.12}, {-0.38, 0.12, 0.12});
+  TetComplex c = tetrahedralize_surface(sphere, {{wire, "/objects/0/growth/obstacles/0"}, {block, "/objects/0/growth/obstacles/1"}},
+                                        TetSettings{}, "s.json", "/objects/0");
   const double max_edge = longest_interface_edge(c);
+  // The obstacle's points: every corner of an obstacle tetrahedron.
   std::vector<std::pair<size_t, Eigen::Vector3d>> fixed;
+  std::vector<uint8_t> of_obstacle(c.points.size(), 0);
+  for (size_t t = 0; t < c.tets.size(); ++t)
+    if (c.label[t] == TetComplex::kObstacle)
+      for (uint32_t v : c.tets[t]) of_obstacle[v] = 1;
   for (size_t i = 0; i < c.points.size(); ++i)
-    if (c.frozen[i]) fixed.push_back({i, c.points[i]});
+    if (of_obstacle[i]) fixed.push_back({i, c.points[i]});
   ASSERT_GE(fixed.size(), 8u);
   const double obstacle_volume = c.volume(TetComplex::kObstacle);
-  const K::Iso_cuboid_3 wire_box(cgal(kWireLo), cgal(kWireHi));
+  const K::Iso_cuboid_3 wire_box(cgal(kWireLo), cgal(kWireHi)), block_box(cgal(block.positions[0]), cgal(block.positions[7]));
   const GrowthRun run = grow(c, growth_of(1.0), kGrowSpan, kGrowSteps, max_edge, kGap, true, [&](int k) {
     ASSERT_EQ(c.first_inverted(), -1) << "step " << k;
     // (a) The obstacle's points, its corners and TetGen's points inside it, stay bit-identical.
@@ -167,10 +197,13 @@ TEST(GrowthObstacles, ObstaclePointsNeverMoveAndTheFrontNeverEntersTheWire) {
     for (size_t i = 0; i < c.points.size(); ++i)
       if (c.on_interface[i]) {
         ASSERT_FALSE(wire_box.has_on_bounded_side(cgal(c.points[i]))) << "vertex " << i << " step " << k;
+        ASSERT_FALSE(block_box.has_on_bounded_side(cgal(c.points[i]))) << "vertex " << i << " step " << k;
       }
-    for (const auto& f : c.interface_faces())
-      ASSERT_FALSE(CGAL::do_intersect(K::Triangle_3(cgal(c.points[f[0]]), cgal(c.points[f[1]]), cgal(c.points[f[2]])), wire_box))
-          << "step " << k;
+    for (const auto& f : c.interface_faces()) {
+      const K::Triangle_3 t(cgal(c.points[f[0]]), cgal(c.points[f[1]]), cgal(c.points[f[2]]));
+      ASSERT_FALSE(CGAL::do_intersect(t, wire_box)) << "step " << k;
+      ASSERT_FALSE(CGAL::do_intersect(t, block_box)) << "step " << k;
+    }
   });
   EXPECT_NEAR(c.volume(TetComplex::kObstacle), obstacle_volume, 1e-15);
   // The front reached the wire and froze on it; the rest grew on (a closed surface still).
@@ -212,17 +245,10 @@ TEST(GrowthObstacles, TwoSpheresGrowingIntoEachOtherFreezeInContactAndStayTwo) {
       ++frozen_between;
     }
   EXPECT_GT(frozen_between, 5);
+  const double closest = closest_between(c, parts);
+  EXPECT_GT(closest, 0);
+  EXPECT_LE(closest, 3 * gap);
   const auto faces = c.interface_faces();
-  double closest2 = 1e9;
-  for (size_t i = 0; i < c.points.size(); ++i) {
-    if (parts.of_point[i] != 0 || std::abs(c.points[i].x()) > 0.05) continue;
-    for (const auto& f : faces)
-      if (parts.of_point[f[0]] == 1)
-        closest2 = std::min(closest2, CGAL::squared_distance(cgal(c.points[i]), K::Triangle_3(cgal(c.points[f[0]]), cgal(c.points[f[1]]),
-                                                                                                cgal(c.points[f[2]]))));
-  }
-  EXPECT_GT(closest2, 0);
-  EXPECT_LE(std::sqrt(closest2), 3 * gap);
   // Neither passed into the other: no vertex of one inside the other's polyhedron.
   for (int side = 0; side < 2; ++side) {
     std::vector<std::array<uint32_t, 3>> own;
@@ -235,22 +261,37 @@ TEST(GrowthObstacles, TwoSpheresGrowingIntoEachOtherFreezeInContactAndStayTwo) {
         EXPECT_EQ(inside(cgal(c.points[i])), CGAL::ON_UNBOUNDED_SIDE) << i;
       }
   }
-  // The contact freeze is what holds them: without it the fronts keep creeping together.
-  TetComplex loose = tetrahedralize_surface(two, TetSettings{}, "s.json", "/objects/0");
-  grow(loose, growth_of(1.0), 0.105, 12, max_edge, gap, false);
-  long loose_frozen = 0;
-  for (size_t i = 0; i < loose.points.size(); ++i) loose_frozen += loose.on_interface[i] && loose.frozen[i];
-  EXPECT_EQ(loose_frozen, 0);
+  // The crease persists: growing on, the frozen vertices stay where they froze, the fronts stay
+  // two and apart.
+  std::vector<std::pair<size_t, Eigen::Vector3d>> frozen;
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i] && c.frozen[i]) frozen.push_back({i, c.points[i]});
+  grow(c, growth_of(1.0), 0.03, 4, max_edge, gap, true, [&](int k) {
+    ASSERT_EQ(c.first_inverted(), -1) << "step " << k;
+    for (const auto& [i, p] : frozen) ASSERT_EQ(c.points[i], p) << "point " << i << " step " << k;
+  });
+  const InterfaceComponents later = interface_components(c);
+  EXPECT_EQ(later.count, 2);
+  EXPECT_GT(closest_between(c, later), 0);
 }
 
 TEST(GrowthObstacles, FreezingIsTheSameAtAnyThreadCount) {
-  // freeze_contacts decides on a snapshot: run twice from the same complex, same result.
+  // freeze_contacts decides on a snapshot, so one thread and all of them freeze the same points.
   const TriMesh two = merged(translated(icosphere(2, 0.25), {-0.28, 0, 0}), translated(icosphere(2, 0.25), {0.28, 0, 0}));
-  TetComplex a = tetrahedralize_surface(two, TetSettings{}, "s.json", "/objects/0");
+  TetComplex a = tetrahedralize_surface(two, {{box_mesh({0.25, 0.3, -0.03}, {0.31, 0.36, 0.03}), "/o/0"}}, TetSettings{}, "s.json",
+                                        "/objects/0");
   grow(a, growth_of(1.0), 0.03, 3, 1.0, 0.01, false);
   TetComplex b = a;
-  freeze_contacts(a, 0.01);
-  freeze_contacts(b, 0.01);
+  const ContactStats all = freeze_contacts(a, 0.03);
+  ContactStats one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = freeze_contacts(b, 0.03);
+  }
+  EXPECT_GT(all.front, 0);
+  EXPECT_GT(all.obstacle, 0);
+  EXPECT_EQ(all.front, one.front);
+  EXPECT_EQ(all.obstacle, one.obstacle);
   EXPECT_EQ(a.frozen, b.frozen);
 }
 
