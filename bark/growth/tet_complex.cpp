@@ -4,10 +4,13 @@
 #include <tetgen.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/intersection.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include "util/errors.h"
 
@@ -17,6 +20,9 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
+// The corners of a tetrahedron's face opposite corner f, outward for a positive tetrahedron.
+constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
 K::Point_3 cgal(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
 CGAL::Orientation orientation(const TetComplex& c, const std::array<uint32_t, 4>& t) {
@@ -24,7 +30,8 @@ CGAL::Orientation orientation(const TetComplex& c, const std::array<uint32_t, 4>
 }
 
 // A closed, consistently oriented surface uses every edge exactly once in each direction.
-void require_closed(const TriMesh& m, const std::string& file, const std::string& where) {
+void require_closed(const TriMesh& m, const std::string& file, const std::string& where,
+                    const std::string& what = "the surface to grow") {
   std::map<std::pair<uint32_t, uint32_t>, int> directed;
   for (const auto& t : m.triangles)
     for (int e = 0; e < 3; ++e) ++directed[{t[size_t(e)], t[size_t(e + 1) % 3]}];
@@ -32,13 +39,66 @@ void require_closed(const TriMesh& m, const std::string& file, const std::string
     const auto back = directed.find({edge.second, edge.first});
     if (n != 1 || back == directed.end() || back->second != 1)
       throw UserError(file, where,
-                      "the surface to grow must be closed and consistently oriented: its edge between vertices " +
+                      what + " must be closed and consistently oriented: its edge between vertices " +
                           std::to_string(edge.first) + " and " + std::to_string(edge.second) + " is used " +
                           std::to_string(n) + " time(s) one way and " +
                           std::to_string(back == directed.end() ? 0 : back->second) + " the other");
   }
-  if (m.triangles.empty()) throw UserError(file, where, "the surface to grow has no triangles");
+  if (m.triangles.empty()) throw UserError(file, where, what + " has no triangles");
+  for (const auto& t : m.triangles)
+    for (uint32_t v : t)
+      if (v >= m.positions.size())
+        throw UserError(file, where, what + " refers to vertex " + std::to_string(v) + " of " + std::to_string(m.positions.size()));
 }
+
+// Six times the signed volume a closed mesh encloses (> 0 when its triangles face outwards).
+double signed_volume6(const TriMesh& m) {
+  double v = 0;
+  for (const auto& t : m.triangles) v += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]]));
+  return v;
+}
+
+using SurfaceMesh = CGAL::Surface_mesh<K::Point_3>;
+
+// The mesh as a CGAL halfedge structure for the exact intersection test; empty when it is not
+// a 2-manifold (a vertex whose triangles form more than one fan).
+std::optional<SurfaceMesh> surface_mesh(const TriMesh& m) {
+  SurfaceMesh sm;
+  std::vector<SurfaceMesh::Vertex_index> v;
+  v.reserve(m.positions.size());
+  for (const auto& p : m.positions) v.push_back(sm.add_vertex(cgal(p)));
+  for (const auto& t : m.triangles)
+    if (sm.add_face(v[t[0]], v[t[1]], v[t[2]]) == SurfaceMesh::null_face()) return std::nullopt;
+  return sm;
+}
+
+// Sec. 4.5 needs the growing surface and the obstacles apart at the start (the front meets an
+// obstacle by growing into it): any shared point, crossing or one inside the other is an error.
+void require_apart(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const std::string& file,
+                   const std::string& where) {
+  const auto manifold = [&](const TriMesh& m, const std::string& w, const std::string& what) {
+    auto sm = surface_mesh(m);
+    if (!sm) throw UserError(file, w, what + " must be a 2-manifold (a vertex has triangles in more than one fan)");
+    return std::move(*sm);
+  };
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const SurfaceMesh grow = manifold(surface, where, "the surface to grow");
+  std::vector<SurfaceMesh> obs;
+  for (size_t i = 0; i < obstacles.size(); ++i) {
+    obs.push_back(manifold(obstacles[i].mesh, obstacles[i].where, "an obstacle"));
+    const auto bounded = PMP::parameters::do_overlap_test_of_bounded_sides(true);
+    if (PMP::do_intersect(grow, obs[i], bounded, PMP::parameters::default_values()))
+      throw UserError(file, obstacles[i].where,
+                      "the obstacle touches, intersects, contains or lies inside the surface to grow at " + where +
+                          " (obstacles must be apart from the surface at the start; the surface grows into them)");
+    for (size_t j = 0; j < i; ++j)
+      if (PMP::do_intersect(obs[j], obs[i], bounded, PMP::parameters::default_values()))
+        throw UserError(file, obstacles[i].where,
+                        "the obstacle touches, intersects, contains or lies inside the obstacle at " + obstacles[j].where +
+                            " (obstacles must be apart from each other)");
+  }
+}
+
 
 // TetGen's arrays are freed by tetgenio's destructor with delete[], so they are made with new[]
 // (the one place in the project that allocates so).
@@ -49,10 +109,11 @@ T* tetgen_array(size_t n) {
 
 }  // namespace
 
-std::vector<std::array<uint32_t, 3>> TetComplex::interface_faces() const {
+std::vector<std::array<uint32_t, 3>> TetComplex::interface_faces() const { return boundary_faces(kInside); }
+
+std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which) const {
   std::map<std::array<uint32_t, 3>, std::pair<size_t, int>> seen;  // sorted face -> (tet, opposite corner)
   std::vector<std::array<uint32_t, 3>> out;
-  static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};  // outward for a positive tet
   for (size_t t = 0; t < tets.size(); ++t)
     for (int f = 0; f < 4; ++f) {
       std::array<uint32_t, 3> face{tets[t][size_t(kFace[f][0])], tets[t][size_t(kFace[f][1])], tets[t][size_t(kFace[f][2])]};
@@ -64,10 +125,10 @@ std::vector<std::array<uint32_t, 3>> TetComplex::interface_faces() const {
         continue;
       }
       const size_t u = it->second.first;
-      if (label[t] != label[u]) {
-        // Oriented outwards from the inside tetrahedron.
-        const size_t in = label[t] ? t : u;
-        const int fi = label[t] ? f : it->second.second;
+      if ((label[t] == which) != (label[u] == which)) {
+        // Oriented outwards from the tetrahedron labelled `which`.
+        const size_t in = label[t] == which ? t : u;
+        const int fi = label[t] == which ? f : it->second.second;
         out.push_back({tets[in][size_t(kFace[fi][0])], tets[in][size_t(kFace[fi][1])], tets[in][size_t(kFace[fi][2])]});
       }
       seen.erase(it);
@@ -105,28 +166,53 @@ long TetComplex::first_inverted() const {
 
 TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& s, const std::string& file,
                                   const std::string& where) {
+  return tetrahedralize_surface(surface, {}, s, file, where);
+}
+
+TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles,
+                                  const TetSettings& s, const std::string& file, const std::string& where) {
   require_closed(surface, file, where);
+  for (const auto& o : obstacles) require_closed(o.mesh, file, o.where, "an obstacle");
+  if (!obstacles.empty()) require_apart(surface, obstacles, file, where);
+
+  // The box: the surface padded by `padding` × its largest extent, grown to hold every obstacle
+  // with the same padding around it (TetSettings::padding).
   Eigen::Vector3d lo = surface.positions.front(), hi = lo;
   for (const auto& p : surface.positions) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
   const double pad = s.padding * (hi - lo).maxCoeff();
+  for (const auto& o : obstacles)
+    for (const auto& p : o.mesh.positions) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
   lo.array() -= pad;
   hi.array() += pad;
 
-  tetgenio in, out;
+  // The input points: the surface's, then each obstacle's (first[k] is obstacle k's first),
+  // then the box's 8 corners.
   const size_t n = surface.positions.size();
-  in.numberofpoints = int(n + 8);
-  in.pointlist = tetgen_array<REAL>(3 * (n + 8));
-  for (size_t i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + size_t(k)] = surface.positions[i][k];
-  for (int c = 0; c < 8; ++c) {
-    const Eigen::Vector3d p((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(), (c & 4) ? hi.z() : lo.z());
-    for (int k = 0; k < 3; ++k) in.pointlist[3 * (n + size_t(c)) + size_t(k)] = p[k];
-  }
+  std::vector<size_t> first{n};
+  for (const auto& o : obstacles) first.push_back(first.back() + o.mesh.positions.size());
+  const size_t n_all = first.back();
+  size_t n_triangles = surface.triangles.size();
+  for (const auto& o : obstacles) n_triangles += o.mesh.triangles.size();
+
+  tetgenio in, out;
+  in.numberofpoints = int(n_all + 8);
+  in.pointlist = tetgen_array<REAL>(3 * (n_all + 8));
+  auto set_point = [&](size_t i, const Eigen::Vector3d& p) {
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + size_t(k)] = p[k];
+  };
+  for (size_t i = 0; i < n; ++i) set_point(i, surface.positions[i]);
+  for (size_t k = 0; k < obstacles.size(); ++k)
+    for (size_t i = 0; i < obstacles[k].mesh.positions.size(); ++i) set_point(first[k] + i, obstacles[k].mesh.positions[i]);
+  for (int c = 0; c < 8; ++c)
+    set_point(n_all + size_t(c), Eigen::Vector3d((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(), (c & 4) ? hi.z() : lo.z()));
   const int box[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  in.numberoffacets = int(surface.triangles.size() + 6);
+  in.numberoffacets = int(n_triangles + 6);
   in.facetlist = tetgen_array<tetgenio::facet>(size_t(in.numberoffacets));
   auto polygon = [&](tetgenio::facet& f, std::initializer_list<int> corners) {
     f.numberofpolygons = 1;
@@ -137,11 +223,25 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& s, 
     f.polygonlist[0].vertexlist = tetgen_array<int>(corners.size());
     std::copy(corners.begin(), corners.end(), f.polygonlist[0].vertexlist);
   };
-  for (size_t t = 0; t < surface.triangles.size(); ++t)
-    polygon(in.facetlist[t], {int(surface.triangles[t][0]), int(surface.triangles[t][1]), int(surface.triangles[t][2])});
+  // Each input triangle (sorted corners) -> its owner (−1: the surface, k: obstacle k) and its
+  // corners oriented towards the owner's outside, for the labels below.
+  std::map<std::array<uint32_t, 3>, std::pair<int, std::array<uint32_t, 3>>> owner;
+  size_t facet = 0;
+  auto add_triangles = [&](const TriMesh& m, size_t offset, int who, bool flip) {
+    for (const auto& t : m.triangles) {
+      std::array<uint32_t, 3> f{uint32_t(offset + t[0]), uint32_t(offset + t[1]), uint32_t(offset + t[2])};
+      polygon(in.facetlist[facet++], {int(f[0]), int(f[1]), int(f[2])});
+      if (flip) std::swap(f[1], f[2]);
+      std::array<uint32_t, 3> key = f;
+      std::sort(key.begin(), key.end());
+      owner.emplace(key, std::make_pair(who, f));
+    }
+  };
+  add_triangles(surface, 0, -1, false);
+  for (size_t k = 0; k < obstacles.size(); ++k)
+    add_triangles(obstacles[k].mesh, first[k], int(k), signed_volume6(obstacles[k].mesh) < 0);
   for (int f = 0; f < 6; ++f)
-    polygon(in.facetlist[surface.triangles.size() + size_t(f)],
-            {int(n) + box[f][0], int(n) + box[f][1], int(n) + box[f][2], int(n) + box[f][3]});
+    polygon(in.facetlist[facet++], {int(n_all) + box[f][0], int(n_all) + box[f][1], int(n_all) + box[f][2], int(n_all) + box[f][3]});
 
   // p: a piecewise linear complex; Y: its facets keep their vertices (no Steiner points on the
   // surface); q: quality; A: a region attribute per region the facets enclose; Q: quiet.
@@ -154,8 +254,8 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& s, 
     tetrahedralize(switches, &in, &out);
   } catch (int code) {
     throw UserError(file, where,
-                    "TetGen cannot tetrahedralize the surface (code " + std::to_string(code) +
-                        "; a self-intersecting or degenerate surface?)");
+                    "TetGen cannot tetrahedralize the surface" + std::string(obstacles.empty() ? "" : " and its obstacles") +
+                        " (code " + std::to_string(code) + "; a self-intersecting or degenerate surface?)");
   }
 
   TetComplex c;
@@ -164,19 +264,35 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& s, 
     c.points[i] = Eigen::Vector3d(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
   c.tets.resize(size_t(out.numberoftetrahedra));
   c.label.resize(c.tets.size());
-  // The region that touches the box is outside; every other region (the surface's inside,
-  // several if it has several components) is inside.
-  const double outside_attribute = [&] {
-    for (size_t t = 0; t < c.tets.size(); ++t)
-      for (int k = 0; k < 4; ++k)
-        if (size_t(out.tetrahedronlist[4 * t + size_t(k)]) >= n && size_t(out.tetrahedronlist[4 * t + size_t(k)]) < n + 8)
-          return out.tetrahedronattributelist[t * size_t(out.numberoftetrahedronattributes)];
-    return -1.0;
-  }();
   for (size_t t = 0; t < c.tets.size(); ++t) {
     for (int k = 0; k < 4; ++k) c.tets[t][size_t(k)] = uint32_t(out.tetrahedronlist[4 * t + size_t(k)]);
     if (orientation(c, c.tets[t]) == CGAL::NEGATIVE) std::swap(c.tets[t][2], c.tets[t][3]);
-    c.label[t] = out.tetrahedronattributelist[t * size_t(out.numberoftetrahedronattributes)] == outside_attribute ? 0 : 1;
+  }
+  // Labels per region (TetGen numbers the regions the facets enclose): the region that touches
+  // the box is outside; a region on the inner side of an obstacle's triangle (the side its
+  // outward orientation faces away from, decided by the exact predicate) is that obstacle's;
+  // every other region (the surface's inside, several if it has several components) is inside.
+  const size_t n_attributes = size_t(out.numberoftetrahedronattributes);
+  auto attribute = [&](size_t t) { return out.tetrahedronattributelist[t * n_attributes]; };
+  std::map<double, uint8_t> region_label;
+  for (size_t t = 0; t < c.tets.size(); ++t) {
+    for (uint32_t v : c.tets[t])
+      if (v >= n_all && v < n_all + 8) region_label[attribute(t)] = TetComplex::kOutside;
+    for (int f = 0; f < 4; ++f) {
+      std::array<uint32_t, 3> key{c.tets[t][size_t(kFace[f][0])], c.tets[t][size_t(kFace[f][1])], c.tets[t][size_t(kFace[f][2])]};
+      std::sort(key.begin(), key.end());
+      const auto it = owner.find(key);
+      if (it == owner.end() || it->second.first < 0) continue;
+      const auto& [a, b, d] = it->second.second;
+      const uint32_t opposite = c.tets[t][size_t(f)];
+      if (CGAL::orientation(cgal(c.points[a]), cgal(c.points[b]), cgal(c.points[d]), cgal(c.points[opposite])) ==
+          CGAL::NEGATIVE)
+        region_label[attribute(t)] = TetComplex::kObstacle;
+    }
+  }
+  for (size_t t = 0; t < c.tets.size(); ++t) {
+    const auto it = region_label.find(attribute(t));
+    c.label[t] = it == region_label.end() ? TetComplex::kInside : it->second;
   }
   c.on_interface.assign(c.points.size(), 0);
   for (const auto& f : c.interface_faces())
@@ -185,7 +301,11 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& s, 
   for (size_t i = 0; i < c.points.size(); ++i)
     for (int k = 0; k < 3; ++k)
       if (c.points[i][k] == lo[k] || c.points[i][k] == hi[k]) c.on_box[i] = 1;
+  // Sec. 4.5: obstacles do not grow or give way; every corner of their tetrahedra is fixed.
   c.frozen.assign(c.points.size(), 0);
+  for (size_t t = 0; t < c.tets.size(); ++t)
+    if (c.label[t] == TetComplex::kObstacle)
+      for (uint32_t v : c.tets[t]) c.frozen[v] = 1;
   // TetGen keeps the input points first and in order (switch Y adds none on the facets).
   c.source_vertex.assign(c.points.size(), -1);
   for (size_t i = 0; i < n; ++i) c.source_vertex[i] = int32_t(i);

@@ -4,6 +4,11 @@
 // bounding box, keeping the surface's vertices and triangles (switch Y); each tetrahedron is
 // labelled inside (1) or outside (0) the surface, and the bark surface is the set of faces
 // between the two labels. Orientation is decided by CGAL's exact predicates.
+// Obstacles (sec. 4.5): closed meshes embedded in the same volume ("this external tetrahedral
+// mesh also conforms to the boundaries of any obstacles"); their tetrahedra are labelled
+// obstacle (2) and every corner of an obstacle tetrahedron is frozen, so obstacle faces never
+// move. The bark interface is the set of faces between an inside tetrahedron and any other
+// label; faces between the outside and an obstacle are not part of it.
 #pragma once
 
 #include <array>
@@ -18,7 +23,10 @@
 namespace phellem::bark {
 
 struct TetSettings {
-  double padding = 0.5;          // the box around the surface, × its largest extent on every side
+  // The box around the surface and every obstacle (their common bounding box), padded on every
+  // side by `padding` × the surface's largest extent: an obstacle reaching beyond the surface's
+  // padded box enlarges the box so that it lies wholly inside.
+  double padding = 0.5;
   double quality = 1.5;          // TetGen's radius-edge bound (switch q)
   double max_volume = 0;         // m³ per tetrahedron (switch a; 0: none)
 };
@@ -43,15 +51,31 @@ struct TetComplex {
   // the complex that adds points goes through here so no per-point array falls out of step.
   uint32_t add_point_between(uint32_t a, uint32_t b, double s);
 
-  // The faces between labels, oriented outwards from the inside (the bark surface).
+  // The faces between an inside tetrahedron and one of any other label (outside or obstacle),
+  // oriented outwards from the inside (the bark surface), sorted.
   std::vector<std::array<uint32_t, 3>> interface_faces() const;
+  // The faces between a tetrahedron labelled `which` and one of another label, oriented
+  // outwards from `which`, sorted (boundary_faces(kObstacle): the obstacles' surfaces).
+  std::vector<std::array<uint32_t, 3>> boundary_faces(uint8_t which) const;
   double volume(uint8_t which) const;  // summed volume of the tetrahedra with that label
   // The first tetrahedron that is not positively oriented by the exact predicate, or −1.
   long first_inverted() const;
 };
 
+// An obstacle of growth (sec. 4.5): a closed, consistently oriented mesh (either orientation)
+// and where it comes from (a JSON path, e.g. /objects/0/growth/obstacles/1) for errors.
+struct GrowthObstacle {
+  TriMesh mesh;
+  std::string where;
+};
+
 // Throws UserError(file, where, ...) when the surface is not closed or TetGen refuses it
-// (self-intersections): `where` names the object.
+// (self-intersections): `where` names the object. With obstacles, throws
+// UserError(file, obstacle.where, ...) when an obstacle is not closed, touches, intersects,
+// contains or lies inside the surface, or touches, intersects, contains or lies inside an
+// earlier obstacle (checked with CGAL's exact predicates before TetGen runs).
+TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles,
+                                  const TetSettings& settings, const std::string& file, const std::string& where);
 TetComplex tetrahedralize_surface(const TriMesh& surface, const TetSettings& settings, const std::string& file,
                                   const std::string& where);
 
