@@ -19,6 +19,7 @@
 #include "cli/options.h"
 #include "cli/outputs.h"
 #include "cli/preview.h"
+#include "cli/slice.h"
 #include "cli/render_job.h"
 #include "cli/simulate.h"
 #include "io/image_output.h"
@@ -140,6 +141,7 @@ int main(int argc, char** argv) {
     if (o.command == "growth") return run_growth(o);
     if (o.command == "fit") return run_fit(o);
     if (o.command == "preview") return run_preview(o);
+    if (o.command == "slice") return run_slice(o);
     return o.command == "render" ? run_render(o) : run_turntable(o);
   } catch (const UserError& e) {
     std::cerr << "phellem: error: " << printable(e.what()) << "\n";

@@ -55,6 +55,17 @@ double positive(const std::string& opt, const std::string& v, double hi, const s
   return x;
 }
 
+// A finite number in [-hi, hi].
+double finite_number(const std::string& opt, const std::string& v, double hi, const std::string& what) {
+  const std::string range = "must be " + what + ", a number in [-" + std::to_string(int64_t(hi)) + ", " + std::to_string(int64_t(hi)) + "]";
+  double x = 0;
+  auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (v.empty() || p != v.data() + v.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+    bad(opt, range + ", got \"" + v + "\"");
+  if (ec == std::errc::result_out_of_range || !std::isfinite(x) || std::abs(x) > hi) bad(opt, range + ", got " + v);
+  return x;
+}
+
 // Output names are checked before any work: a wrong extension found only when the file is
 // written would cost the whole render.
 void need_extension(const std::string& opt, const std::string& file, const std::string& ext) {
@@ -78,6 +89,7 @@ std::string usage() {
          "                 [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
          "  phellem fit HEIGHT_IMAGE --scale PX_PER_CM --model strips|stress -o DIR [--albedo IMAGE]\n"
          "                 [--time-budget S] [--max-evals N] [--seed S] [--threads N] [--quiet]\n"
+         "  phellem slice SCENE.json -o SECTION.png [--object NAME] [--plane x|y|z=VALUE] [--res WxH] [--quiet]\n"
          "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--max-level N]\n"
          "                 [--edge-px P] [--frames N] [--quiet]\n"
          "  render, turntable, growth and simulate also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
@@ -96,8 +108,8 @@ Options parse(const std::vector<std::string>& args) {
   if (args.empty()) bad("command", "no command given\n" + usage());
   o.command = args[0];
   if (o.command != "render" && o.command != "turntable" && o.command != "growth" && o.command != "simulate" &&
-      o.command != "fit" && o.command != "preview")
-    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, compare, fit, preview\n" + usage());
+      o.command != "fit" && o.command != "preview" && o.command != "slice")
+    bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, slice, compare, fit, preview\n" + usage());
   const bool fit = o.command == "fit";
   const bool frames = o.command == "turntable" || o.command == "growth";
   for (size_t i = 1; i < args.size(); ++i) {
@@ -118,7 +130,16 @@ Options parse(const std::vector<std::string>& args) {
       o.edge_px = positive(a, value(), 1000, "the micro-edge length near cracks in pixels");
     else if (a == "--frames" && o.command == "preview")
       o.frames = int(integer(a, value(), 1, 100000));
-    else if (a == "--png" && o.command != "preview") {
+    else if (a == "--object" && o.command == "slice")
+      o.object = value();
+    else if (a == "--plane" && o.command == "slice") {
+      const std::string v = value();
+      const auto eq = v.find('=');
+      if (v.size() < 3 || eq != 1 || (v[0] != 'x' && v[0] != 'y' && v[0] != 'z'))
+        bad(a, "expected AXIS=VALUE with AXIS x, y or z and VALUE in metres, e.g. y=0.3; got \"" + v + "\"");
+      o.plane_axis = v[0] - 'x';
+      o.plane_value = finite_number(a, v.substr(2), 1e6, "a coordinate in metres");
+    } else if (a == "--png" && o.command != "preview" && o.command != "slice") {
       if (frames)
         o.png_frames = true;
       else
@@ -198,6 +219,14 @@ Options parse(const std::vector<std::string>& args) {
     if (!o.exr.empty() && o.png.empty()) bad("-o", "only with --snapshot: the AOVs of the snapshot");
     if (!o.exr.empty()) need_extension("-o", o.exr, ".exr");
     if (!o.png.empty()) need_extension("--snapshot", o.png, ".png");
+  }
+  if (o.command == "slice") {
+    if (o.scene.empty()) bad("slice", "a scene file is required");
+    if (o.exr.empty()) bad("-o", "required for slice: the section image (.png)");
+    need_extension("-o", o.exr, ".png");
+    if (o.spp || !o.stats.empty() || !o.view.empty() || o.memory_estimate || !o.memory_limit.empty())
+      bad(o.spp ? "--spp" : !o.stats.empty() ? "--stats" : !o.view.empty() ? "--view" : o.memory_estimate ? "--memory-estimate" : "--memory-limit",
+          "not an option of slice");
   }
   if (o.command == "render") {
     if (!o.exr.empty()) need_extension("-o", o.exr, ".exr");

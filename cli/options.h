@@ -28,6 +28,10 @@ struct Options {
   // preview: --snapshot OUT.png (in `png`), --max-level N, --edge-px P, --frames N (window: quit after N frames).
   std::optional<int> max_level;
   std::optional<double> edge_px;
+  // slice: --object NAME, --plane AXIS=VALUE (axis 0 x, 1 y, 2 z; −1 not given).
+  std::string object;
+  int plane_axis = -1;
+  double plane_value = 0;
 };
 
 Options parse(const std::vector<std::string>& args);

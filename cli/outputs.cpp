@@ -16,6 +16,8 @@ void expect_outputs(const cli::Options& o, OutputSet& out) {
     if (const std::string exr = render_exr_path(o); !exr.empty()) out.expect_file("-o", exr);
     if (!o.png.empty()) out.expect_file("--png", o.png);
     if (!o.stats.empty()) out.expect_file("--stats", o.stats);
+  } else if (o.command == "slice") {
+    out.expect_file("-o", o.exr);
   } else if (o.command == "simulate") {
     out.expect_folder("-o", o.exr);
     if (!o.stats.empty()) out.expect_file("--stats", o.stats);

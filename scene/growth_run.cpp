@@ -24,12 +24,12 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi) {
   const ObjectDesc& obj = desc.objects.at(oi);
   if (!obj.growth) throw std::logic_error("start_growth: the object does not grow");
   const GrowthDesc& g = *obj.growth;
-  std::vector<bark::TriMesh> obstacles;
-  for (size_t k : g.obstacles) obstacles.push_back(obstacle_mesh(desc.objects.at(k)));
-  // A file mesh's own problems (not closed) are reported at its file; a procedural one at the object.
-  const std::string file = obj.file.empty() ? desc.file : obj.file;
-  const std::string where = obj.file.empty() ? g.where.path : "meshes";
-  return bark::CambialGrowth(object_trimesh(obj), obstacles, g.settings, file, where);
+  std::vector<bark::GrowthObstacle> obstacles;
+  for (size_t k = 0; k < g.obstacles.size(); ++k)
+    obstacles.push_back({obstacle_mesh(desc.objects.at(g.obstacles[k])), g.where.path + "/obstacles/" + std::to_string(k)});
+  // Meshes that cannot grow (open, overlapping) are reported at the growth block and at the
+  // obstacle's entry in it.
+  return bark::CambialGrowth(object_trimesh(obj), obstacles, g.settings, desc.file, g.where.path);
 }
 
 std::shared_ptr<const bark::TriMesh> grown_surface(const bark::CambialGrowth& g) {

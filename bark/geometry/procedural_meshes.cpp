@@ -101,7 +101,7 @@ TriMesh log_mesh(double radius, double height, int around, int along, double jit
       std::vector<uint32_t> inner;
       const int n = k == rings ? 1 : std::max(3, int(std::lround(around * f)));
       for (int i = 0; i < n; ++i) {
-        const double th = 2 * kPi * (i + 0.5 * k) / n;
+        const double th = 2 * kPi * (i + 0.5) / n;  // half a step past the outer ring's first vertex
         inner.push_back(uint32_t(m.positions.size()));
         m.positions.emplace_back(radius * f * std::cos(th), y, -radius * f * std::sin(th));
         m.uvs.emplace_back(th / (2 * kPi), (end ? 1.0 : 0.0) + up.y() * (1 - f) * radius / height);

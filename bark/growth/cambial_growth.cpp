@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "bark/growth/growth_contact.h"
 #include "bark/growth/interface_curvature.h"
 #include "bark/growth/interface_motion.h"
 #include "bark/growth/interface_refinement.h"
@@ -73,7 +74,7 @@ GrowthSurface extract_interface(const TetComplex& c) {
   return s;
 }
 
-CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<TriMesh>& obstacles, const CambialGrowthSettings& s,
+CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
                              const std::string& file, const std::string& where)
     : settings_(s) {
   const TriMesh input = welded(surface);
@@ -81,9 +82,9 @@ CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<TriMesh>&
   if (settings_.edge_max <= 0) settings_.edge_max = 1.5 * mean;
   if (settings_.edge_min <= 0) settings_.edge_min = 0.4 * settings_.edge_max;
   const auto t0 = Clock::now();
-  if (!obstacles.empty())
-    throw UserError(file, where + "/obstacles", "obstacles are not supported yet");
-  complex_ = tetrahedralize_surface(input, settings_.tet, file, where);
+  std::vector<GrowthObstacle> welded_obstacles;
+  for (const auto& o : obstacles) welded_obstacles.push_back({welded(o.mesh), o.where});
+  complex_ = tetrahedralize_surface(input, welded_obstacles, settings_.tet, file, where);
   stats_.setup_s = since(t0);
   stats_.vertices_start = stats_.vertices_end = interface_vertex_count(complex_);
   stats_.tets_start = stats_.tets_end = complex_.tets.size();
@@ -110,6 +111,14 @@ bool CambialGrowth::step() {
   // Sec. 4.3: reversed growth is the negated speed plus a small curvature term, which keeps a
   // shrinking surface from folding where it is concave.
   if (settings_.reverse) smooth_interface_curvature(complex_, 0.1);
+  // Sec. 4.5: vertices that came within half the step's thickening of an obstacle or of
+  // another part of the front stop there for good (a crease wound where fronts meet).
+  const double step_thickening = std::abs(settings_.function.cumulative(age_at(step_ + 1)) -
+                                          settings_.function.cumulative(age_at(step_))) *
+                                 (1 + std::abs(double(settings_.function.eccentricity)));
+  const ContactStats contact = freeze_contacts(complex_, std::max(0.5 * step_thickening, 0.02 * settings_.edge_min));
+  stats_.frozen_obstacle += contact.obstacle;
+  stats_.frozen_contact += contact.front;
   stats_.splits += split_long_interface_edges(complex_, settings_.edge_max);
   ++step_;
   stats_.steps_s += since(t0);

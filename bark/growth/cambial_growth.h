@@ -1,8 +1,9 @@
 // Cambial growth of a closed surface (Kratt et al., Woodification; Spicker 2014 ch. 5): the
 // surface becomes the interface of a labelled TetGen volume (tet_complex.h) with the
 // obstacles as fixed regions, and each step moves it along its normals by the growth
-// function's thickening over the step (Eq. 1–3, interface_motion.h), then repairs the volume
-// so interface edges stay inside their length band (interface_refinement.h). Every
+// function's thickening over the step (Eq. 1–3, interface_motion.h), freezes the vertices
+// that reached an obstacle or another front (sec. 4.5, growth_contact.h), then repairs the
+// volume so interface edges stay inside their length band (interface_refinement.h). Every
 // `ring_interval` steps the interface is recorded as a growth ring. Reversed growth (sec. 4.3)
 // runs the ages backwards: the surface shrinks by the thickening it would have grown.
 //
@@ -34,6 +35,7 @@ struct CambialGrowthStats {
   size_t vertices_start = 0, vertices_end = 0;  // interface vertices
   size_t tets_start = 0, tets_end = 0;
   long moved = 0, shortened = 0, clamped = 0, splits = 0;
+  long frozen_obstacle = 0, frozen_contact = 0;  // interface vertices stopped by an obstacle, by another front
   double setup_s = 0, steps_s = 0;  // TetGen; all steps
 };
 
@@ -51,8 +53,8 @@ double mean_edge_length(const TriMesh& m);
 class CambialGrowth {
  public:
   // `surface`: closed and consistently oriented (UserError at file/where otherwise);
-  // `obstacles`: closed meshes that do not grow.
-  CambialGrowth(const TriMesh& surface, const std::vector<TriMesh>& obstacles, const CambialGrowthSettings& s,
+  // `obstacles`: closed meshes that do not grow, apart from the surface and each other.
+  CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
                 const std::string& file, const std::string& where);
 
   // One step; false when every step has run.
