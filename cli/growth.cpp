@@ -7,7 +7,9 @@
 #include "cli/outputs.h"
 #include "cli/render_job.h"
 #include "renderer/render_scene.h"
+#include "scene/growth_run.h"
 #include "scene/strip_bark_tree.h"
+#include "util/progress.h"
 #include "util/errors.h"
 
 namespace phellem {
@@ -35,12 +37,18 @@ int run_growth(const cli::Options& o) {
     if (obj.type == ObjectType::Tree && obj.tree.strip_bark)
       sims.emplace_back(oi, std::make_unique<TreeStripSimulation>(obj, oi, o.seed));
   }
-  if (sims.empty()) throw UserError(o.scene, "/objects", "no tree object has a \"bark\": {\"model\": \"strips\"} to grow");
+  // Cambial growth of meshes (Kratt et al.): each frame shows the surface at its step.
+  std::vector<std::pair<size_t, bark::CambialGrowth>> growths;
+  for (size_t oi = 0; oi < l.desc.objects.size(); ++oi)
+    if (l.desc.objects[oi].growth) growths.emplace_back(oi, start_growth(l.desc, oi));
+  if (sims.empty() && growths.empty())
+    throw UserError(o.scene, "/objects",
+                    "nothing grows: no tree object has a \"bark\": {\"model\": \"strips\"} and no mesh a \"growth\"");
   // Bark that does not grow with the frames (stress bark) is simulated once.
   BarkResults still;
   for (size_t oi = 0; oi < l.desc.objects.size(); ++oi) {
     const ObjectDesc& obj = l.desc.objects[oi];
-    if (has_simulated_bark(obj) && !(obj.type == ObjectType::Tree && obj.tree.strip_bark && !obj.stress_bark))
+    if (has_simulated_bark(obj) && !obj.growth && !(obj.type == ObjectType::Tree && obj.tree.strip_bark && !obj.stress_bark))
       still.objects.emplace(oi, simulate_object_bark(l.desc, oi, !o.quiet));
   }
   const int frames = *o.frames;
@@ -57,6 +65,17 @@ int run_growth(const cli::Options& o) {
       for (float& r : tree.radius) r *= k;
       scale_radii(tree.branches, k);
       bark.objects[oi].strip_parts = sim->surfaces();
+    }
+    for (auto& [oi, g] : growths) {
+      const int step = int(std::lround(double(g.steps_total()) * double(f + 1) / double(frames)));
+      const std::string name = l.desc.objects[oi].name.empty() ? "mesh" + std::to_string(oi) : l.desc.objects[oi].name;
+      Progress bar("grow " + name, step - g.steps_done(), !o.quiet && step > g.steps_done());
+      while (g.steps_done() < step && g.step()) bar.advance();
+      bar.finish();
+      ObjectBark& b = bark.objects[oi];
+      b.grown = grown_surface(g);
+      // Stress bark cracks on the surface of this frame.
+      b.cracked = crack_grown_surface(l.desc, oi, *b.grown, !o.quiet);
     }
     const auto scene = build_render_scene(frame_desc, bark, frame_desc.camera, l.width, l.height, !o.quiet);
     render_frame(o, l, *scene, Camera(frame_desc.camera, l.width, l.height), f, frames, out);

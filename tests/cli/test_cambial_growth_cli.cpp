@@ -1,0 +1,120 @@
+// Cambial growth from the command line: the scene's `"growth"` block is validated at its JSON
+// paths (exit 2), `simulate` writes the grown surface, its rings and stats with the growth
+// counts, the result is the same at 1 and 2 threads, and `slice` draws the rings.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/support/test_util.h"
+
+namespace phellem {
+namespace {
+
+// A small closed log growing; `growth` and `extra` spliced in.
+std::string log_scene(const std::string& growth, const std::string& shape = "log", const std::string& extra = "") {
+  return R"({"objects": [{"type": "mesh", "name": "trunk", "procedural": {"shape": ")" + shape +
+         R"(", "triangles": 600, "radius": 0.1, "height": 0.3}, "growth": )" + growth + "}" + extra + "]}";
+}
+
+struct Case {
+  std::string growth, shape, extra, where, says;
+};
+
+TEST(CambialGrowthCli, BadGrowthBlocksAreRefusedAtTheirJsonPath) {
+  const std::string dir = test::temp_dir("cambial_growth_bad");
+  const std::string scene = dir + "/scene.json";
+  const std::vector<Case> cases = {
+      {R"({"age_scale": -1})", "log", "", "/objects/0/growth/age_scale", "age_scale must lie in (0, 1e6]"},
+      {R"({"steps": 0})", "log", "", "/objects/0/growth/steps", "[1, 100000]"},
+      {R"({"eccentricity": 1})", "log", "", "/objects/0/growth/eccentricity", "[-0.99, 0.99]"},
+      {R"({"thickness": NaN})", "log", "", "", ""},  // not JSON: a syntax error (checked below)
+      {R"({"obstacles": ["fence"]})", "log", "", "/objects/0/growth/obstacles/0", "no object named \"fence\""},
+      {R"({"obstacles": ["trunk"]})", "log", "", "/objects/0/growth/obstacles/0", "its own obstacle"},
+      {R"({"obstacles": ["p"]})", "log", R"(, {"type": "plane", "name": "p"})", "/objects/0/growth/obstacles/0",
+       "must be a mesh or sphere object"},
+      {R"({"edge_length": [0.01, 0.015]})", "log", "", "/objects/0/growth/edge_length", "2 min <= max"},
+      {R"({"tetrahedra": {"quality": 1.0}})", "log", "", "/objects/0/growth/tetrahedra/quality", "[1.1, 10]"},
+      {R"({"speed": 2})", "log", "", "/objects/0/growth/speed", ""},
+      {R"({"steps": 2})", "trunk", "", "/objects/0/growth", "must be closed"},
+      {R"({"steps": 2, "obstacles": ["s"]})", "log", R"(, {"type": "sphere", "name": "s", "center": [0.1, 0.15, 0], "radius": 0.05})",
+       "/objects/0/growth/obstacles/0", "intersects"},
+  };
+  for (const Case& c : cases) {
+    if (c.where.empty()) continue;
+    test::write_text(scene, log_scene(c.growth, c.shape, c.extra));
+    const auto r = test::run_phellem_limited("simulate " + scene + " -o " + dir + "/out --quiet", 8192, 120);
+    EXPECT_EQ(r.exit_code, 2) << c.growth << "\n" << r.output;
+    EXPECT_EQ(r.output.rfind("phellem: error: " + scene + ": " + c.where + ": ", 0), 0u) << c.growth << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.growth << "\n" << r.output;
+  }
+}
+
+// 8-bit RGB pixels as floats in [0, 1], row 0 at the top.
+std::vector<float> read_rgb(const std::string& path, int& width) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return {};
+  width = in->spec().width;
+  std::vector<float> px(size_t(in->spec().width) * size_t(in->spec().height) * 3);
+  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, px.data());
+  return px;
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream f(path);
+  return nlohmann::json::parse(f);
+}
+
+TEST(CambialGrowthCli, SimulateWritesTheGrownSurfaceRingsAndStatsTheSameAtAnyThreadCount) {
+  const std::string dir = test::temp_dir("cambial_growth_sim");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, log_scene(R"({"steps": 8, "years": 10, "age_scale": 10, "weibull_c": 1, "thickness": 0.03, "ring_interval": 4})"));
+  std::string glb[2];
+  for (int threads : {1, 2}) {
+    const std::string out = dir + "/out" + std::to_string(threads);
+    const auto r = test::run_phellem_limited("simulate " + scene + " -o " + out + " --stats " + out + "_stats.json --quiet --threads " +
+                                                 std::to_string(threads),
+                                             8192, 300);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json stats = read_json(out + "_stats.json");
+    EXPECT_EQ(stats["growth"]["steps"], 8);
+    EXPECT_GT(stats["growth"]["vertices_start"].get<long>(), 100);
+    // The surface grew (0.03 × (1 − e^−1) = 19 mm on a 0.1 m radius): its edges were split.
+    EXPECT_GT(stats["growth"]["vertices_end"].get<long>(), stats["growth"]["vertices_start"].get<long>());
+    EXPECT_GT(stats["time_s"]["growth"].get<double>(), 0.0);
+    const nlohmann::json summary = read_json(out + "/trunk.json");
+    EXPECT_EQ(summary["rings"], 3);  // steps 0, 4 and 8
+    glb[threads - 1] = test::read_text(out + "/trunk.glb");
+    EXPECT_GT(test::read_text(out + "/trunk_rings.glb").size(), 1000u);
+  }
+  EXPECT_GT(glb[0].size(), 1000u);
+  EXPECT_TRUE(glb[0] == glb[1]) << "the grown surface differs between 1 and 2 threads";
+}
+
+TEST(CambialGrowthCli, SliceDrawsTheRingsAndRefusesAPlaneThatMissesTheWood) {
+  const std::string dir = test::temp_dir("cambial_growth_slice");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, log_scene(R"({"steps": 4, "years": 10, "age_scale": 10, "weibull_c": 1, "thickness": 0.03, "ring_interval": 2})"));
+  const auto miss = test::run_phellem_limited("slice " + scene + " -o " + dir + "/s.png --plane y=5 --quiet", 8192, 120);
+  EXPECT_EQ(miss.exit_code, 2) << miss.output;
+  EXPECT_EQ(miss.output.rfind("phellem: error: <command line>: --plane: ", 0), 0u) << miss.output;
+  const auto bad = test::run_phellem_limited("slice " + scene + " -o " + dir + "/s.png --plane w=5", 8192, 120);
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  const auto r = test::run_phellem_limited("slice " + scene + " -o " + dir + "/s.png --plane y=0.15 --res 200x200 --quiet", 8192, 120);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  int width = 0;
+  const std::vector<float> px = read_rgb(dir + "/s.png", width);
+  ASSERT_EQ(width, 200);
+  ASSERT_EQ(px.size(), size_t(200 * 200 * 3));
+  // The centre is wood (brown: red above blue), the corner background (grey).
+  const float* centre = &px[size_t(3 * (100 * 200 + 100))];
+  const float* corner = &px[0];
+  EXPECT_GT(centre[0], centre[2] + 0.15f);
+  EXPECT_NEAR(corner[0], corner[2], 0.05f);
+}
+
+}  // namespace
+}  // namespace phellem
