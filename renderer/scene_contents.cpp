@@ -140,7 +140,7 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
         break;
       }
       case ObjectType::Mesh: {
-        if (o.stress_bark) {
+        if (o.stress_bark && !(o.growth && !o.growth->cracks)) {
           c.jobs.push_back(stress_job(desc, o, *bark_of(bark, oi, o).cracked, mat, object_id));
           break;
         }

@@ -17,7 +17,8 @@ bool has_simulated_bark(const ObjectDesc& o) {
 std::shared_ptr<const bark::CrackedMesh> crack_grown_surface(const SceneDesc& desc, size_t object,
                                                              const bark::TriMesh& grown, bool progress) {
   const ObjectDesc& o = desc.objects.at(object);
-  if (!o.stress_bark) return nullptr;
+  // "cracks": false renders the grown surface without its stress bark's cracks.
+  if (!o.stress_bark || !o.growth->cracks) return nullptr;
   return run_stress_object(desc, object, std::nullopt, progress, &grown).cracked;
 }
 

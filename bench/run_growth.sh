@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Cambial growth (issue 24) timings for the README: the paper's Table 1 "tree close-up"
+# (10k -> 39k interface vertices over 200 steps, 162 ms per step on one 2.0 GHz core) as
+# bench/scenes/growth_tree_closeup.json, then the same growth from 4k, 10k and 39k starting
+# vertices (20 steps) to show how a step's time grows with the interface. `simulate --stats`
+# reports growth.steps, growth.vertices_start/_end, time_s.growth (the steps) and
+# time_s.growth_setup (TetGen) separately. Medians of REPEAT runs (default 3).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source bench/common.sh
+run() {  # scene -> "growth_median setup_median steps v_start v_end"
+  local g=() s=()
+  for r in $(seq "$REPEAT"); do
+    ./build/phellem simulate "$1" -o "$out/o" --quiet --stats "$out/s.json"
+    g+=("$(python3 -c "import json;print(json.load(open('$out/s.json'))['time_s']['growth'])")")
+    s+=("$(python3 -c "import json;print(json.load(open('$out/s.json'))['time_s']['growth_setup'])")")
+  done
+  echo "$(printf '%s\n' "${g[@]}" | median) $(printf '%s\n' "${s[@]}" | median) $(python3 -c "import json;d=json.load(open('$out/s.json'))['growth'];print(d['steps'], d['vertices_start'], d['vertices_end'])")"
+}
+echo "tree close-up (threads: $(nproc))"
+read -r g s steps v0 v1 <<<"$(run bench/scenes/growth_tree_closeup.json)"
+python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step (paper 162 ms: %.1fx faster), TetGen set-up %.2f s' % ($v0, $v1, $steps, $g / $steps * 1e3, 162 / ($g / $steps * 1e3), $s))"
+echo
+echo "vertices_start  vertices_end  steps  ms_per_step  us_per_vertex_step  setup_s"
+for n in 8000 20000 78000; do
+  python3 - "$n" "$out/scale.json" <<'PY'
+import json, sys
+n, path = int(sys.argv[1]), sys.argv[2]
+s = json.load(open("bench/scenes/growth_tree_closeup.json"))
+o = s["objects"][0]
+o["procedural"]["triangles"] = n
+e = 0.0095 * (20000 / n) ** 0.5
+o["growth"].update({"steps": 20, "years": 6, "edge_length": [0.37 * e, e]})
+json.dump(s, open(path, "w"))
+PY
+  read -r g s steps v0 v1 <<<"$(run "$out/scale.json")"
+  python3 -c "print('%14d  %12d  %5d  %11.1f  %18.2f  %7.2f' % ($v0, $v1, $steps, $g / $steps * 1e3, $g / $steps / (($v0 + $v1) / 2) * 1e6, $s))"
+done
