@@ -34,6 +34,9 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
   for (uint32_t w : U)
     if (std::find(T.begin(), T.end(), w) == T.end()) e = w;
   if (e == d || adj.has_edge(c, d, e)) return false;
+  // Never a new edge between two interface points through the outside: such an edge caps the
+  // interface, and the cap flattens and blocks as the interface grows under it.
+  if (c.on_interface[d] && c.on_interface[e]) return false;
   // Each new tetrahedron is T with one face corner replaced by e: positive exactly when the
   // segment d–e crosses the shared face (the union is convex there).
   std::array<std::array<uint32_t, 4>, 3> made;
@@ -82,6 +85,10 @@ bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Pro
   std::array<uint32_t, 4> top = T0, bottom = T0;
   std::replace(top.begin(), top.end(), b, rk);     // keeps a
   std::replace(bottom.begin(), bottom.end(), a, rk);  // keeps b
+  auto all_interface = [&](const std::array<uint32_t, 4>& t) {
+    return c.on_interface[t[0]] && c.on_interface[t[1]] && c.on_interface[t[2]] && c.on_interface[t[3]];
+  };
+  if (all_interface(top) || all_interface(bottom)) return false;  // no caps (see flip_23)
   double before = 1e300;
   for (uint32_t t : ring) before = std::min(before, probe_quality(c, c.tets[t], probe));
   const double after = std::min(probe_quality(c, top, probe), probe_quality(c, bottom, probe));
