@@ -63,7 +63,10 @@ void TetAdjacency::unlink(uint32_t t, const std::array<uint32_t, 4>& corners) {
 
 long TetAdjacency::across(const TetComplex& c, uint32_t t, int f) const {
   const auto& T = c.tets[t];
-  const uint32_t a = T[size_t(kTetFace[f][0])], b = T[size_t(kTetFace[f][1])], d = T[size_t(kTetFace[f][2])];
+  uint32_t a = T[size_t(kTetFace[f][0])], b = T[size_t(kTetFace[f][1])], d = T[size_t(kTetFace[f][2])];
+  // Walk the shortest row (box corners are in thousands of tetrahedra).
+  if (around(b).size() < around(a).size()) std::swap(a, b);
+  if (around(d).size() < around(a).size()) std::swap(a, d);
   for (uint32_t u : around(a)) {
     if (u == t) continue;
     const auto& U = c.tets[u];
@@ -79,11 +82,13 @@ long TetAdjacency::across(const TetComplex& c, uint32_t t, int f) const {
 
 void TetAdjacency::edge_tets(const TetComplex& c, uint32_t a, uint32_t b, std::vector<uint32_t>& out) const {
   out.clear();
+  if (around(b).size() < around(a).size()) std::swap(a, b);
   for (uint32_t u : around(a))
     if (std::find(c.tets[u].begin(), c.tets[u].end(), b) != c.tets[u].end()) out.push_back(u);
 }
 
 bool TetAdjacency::has_edge(const TetComplex& c, uint32_t a, uint32_t b) const {
+  if (around(b).size() < around(a).size()) std::swap(a, b);
   for (uint32_t u : around(a))
     if (std::find(c.tets[u].begin(), c.tets[u].end(), b) != c.tets[u].end()) return true;
   return false;

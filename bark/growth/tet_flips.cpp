@@ -233,7 +233,10 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
 }
 
 long find_tet(const TetComplex& c, const TetAdjacency& adj, const std::array<uint32_t, 4>& corners) {
-  for (uint32_t t : adj.around(corners[0]))
+  uint32_t p = corners[0];
+  for (uint32_t w : corners)
+    if (adj.around(w).size() < adj.around(p).size()) p = w;
+  for (uint32_t t : adj.around(p))
     if (c.tets[t] == corners) return long(t);
   return -1;
 }
