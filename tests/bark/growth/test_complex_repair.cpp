@@ -68,7 +68,9 @@ void expect_consistent_flags(const TetComplex& c, const std::vector<std::array<u
     for (uint32_t v : f) on[v] = 1;
   for (size_t i = 0; i < c.points.size(); ++i) {
     ASSERT_EQ(c.on_interface[i], on[i]) << "point " << i;
-    if (!used[i]) ASSERT_EQ(c.on_interface[i], 0) << "point " << i;
+    if (!used[i]) {
+      ASSERT_EQ(c.on_interface[i], 0) << "point " << i;
+    }
   }
   for (uint8_t l : c.label) ASSERT_TRUE(l == TetComplex::kInside || l == TetComplex::kOutside);
 }
@@ -165,7 +167,9 @@ TEST(InterfaceCoarsening, ShortEdgesCollapseKeepingAClosedManifoldAndPositiveTet
   EXPECT_LT(short_after, short_before / 4) << short_before << " short edges before";
   size_t k = 0;
   for (size_t i = 0; i < c.points.size(); ++i)
-    if (c.on_box[i]) EXPECT_EQ(c.points[i], box_before[k++]);
+    if (c.on_box[i]) {
+      EXPECT_EQ(c.points[i], box_before[k++]);
+    }
   // A coarser polyhedron inscribed in the same sphere: a little less volume, not much.
   EXPECT_LT(c.volume(TetComplex::kInside), v0 * 1.0001);
   EXPECT_GT(c.volume(TetComplex::kInside), v0 * 0.95);
@@ -175,7 +179,7 @@ TEST(TetFlips, QualityRepairNeverTouchesTheInterfaceNorLowersTheWorstOutsideTetr
   TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
   // Squash and split the outside: grow the interface a few steps with splits but no repair.
   const GrowthFunction g = growth_of(1.0);
-  double band_max = edge_range(c).second;
+  const double band_max = edge_range(c).second;
   for (int k = 0; k < 2; ++k) {
     advance_interface(c, g, 0.03 * k, 0.03 * (k + 1));
     split_long_interface_edges(c, band_max);

@@ -83,7 +83,9 @@ TEST(InterfaceMotion, AMoveThatWouldInvertATetrahedronIsClampedNotApplied) {
   }
   EXPECT_GT(stopped, 0);
   for (size_t i = 0; i < c.points.size(); ++i)
-    if (c.on_interface[i]) EXPECT_LT(c.points[i].cwiseAbs().maxCoeff(), 1.0) << "inside the box at ±1 m";
+    if (c.on_interface[i]) {
+      EXPECT_LT(c.points[i].cwiseAbs().maxCoeff(), 1.0) << "inside the box at ±1 m";
+    }
 }
 
 namespace {
