@@ -21,7 +21,7 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_leng
     if (c.on_interface[v]) interface.push_back(v);
   const FlipStats fs = improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length, settings.quality_passes);
   st.flips23 = fs.flips23;
-  st.flips32 = fs.flips32;
+  st.flips32 = fs.flips32 + fs.edge_removals;
   st.relocated = fs.relocated;
   st.free_splits = fs.splits;
   return st;

@@ -115,7 +115,7 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const Gro
     else
       ++st.shortened;
   }
-  st.flips = fs.flips23 + fs.flips32;
+  st.flips = fs.flips23 + fs.flips32 + fs.edge_removals;
   st.relocated = fs.relocated;
 
   // Smoothing of the free vertices within two rings of the interface: towards the mean of

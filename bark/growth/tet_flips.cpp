@@ -61,43 +61,96 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
 }
 
 bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats) {
-  std::vector<uint32_t> ring;
-  adj.edge_tets(c, a, b, ring);
-  if (ring.size() != 3) return false;
-  for (uint32_t t : ring)
+  return remove_edge(c, adj, a, b, probe, stats, 3);
+}
+
+bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
+                 int max_ring) {
+  std::vector<uint32_t> around_ab;
+  adj.edge_tets(c, a, b, around_ab);
+  const size_t n = around_ab.size();
+  if (n < 3 || n > size_t(max_ring)) return false;
+  for (uint32_t t : around_ab)
     if (c.label[t] != TetComplex::kOutside) return false;
-  // The three tetrahedra must close around the edge: three other corners, each used twice.
-  std::array<uint32_t, 6> others{};
-  int n = 0;
-  for (uint32_t t : ring)
-    for (uint32_t w : c.tets[t])
-      if (w != a && w != b) others[size_t(n++)] = w;
-  if (n != 6) return false;
-  std::array<uint32_t, 6> sorted = others;
-  std::sort(sorted.begin(), sorted.end());
-  if (sorted[0] != sorted[1] || sorted[2] != sorted[3] || sorted[4] != sorted[5] || sorted[1] == sorted[2] ||
-      sorted[3] == sorted[4])
-    return false;
-  const std::array<uint32_t, 4> T0 = c.tets[ring[0]];
-  uint32_t rk = sorted[0];
-  for (uint32_t w : {sorted[0], sorted[2], sorted[4]})
-    if (std::find(T0.begin(), T0.end(), w) == T0.end()) rk = w;
-  std::array<uint32_t, 4> top = T0, bottom = T0;
-  std::replace(top.begin(), top.end(), b, rk);     // keeps a
-  std::replace(bottom.begin(), bottom.end(), a, rk);  // keeps b
+  // The ring of the edge, in order: each tetrahedron a–b–x–y links x to y; they must close.
+  std::vector<std::array<uint32_t, 2>> links(n);
+  for (size_t i = 0; i < n; ++i) {
+    int k = 0;
+    for (uint32_t w : c.tets[around_ab[i]])
+      if (w != a && w != b) links[i][size_t(k++)] = w;
+    if (k != 2) return false;
+  }
+  std::vector<uint32_t> ring{links[0][0], links[0][1]};
+  std::vector<uint32_t> ring_tet{around_ab[0]};  // ring_tet[i] holds ring[i]–ring[i+1]
+  std::vector<uint8_t> used(n, 0);
+  used[0] = 1;
+  while (ring.size() <= n) {
+    bool found = false;
+    for (size_t i = 0; i < n && !found; ++i) {
+      if (used[i]) continue;
+      const uint32_t last = ring.back();
+      if (links[i][0] == last || links[i][1] == last) {
+        ring.push_back(links[i][0] == last ? links[i][1] : links[i][0]);
+        ring_tet.push_back(around_ab[i]);
+        used[i] = 1;
+        found = true;
+      }
+    }
+    if (!found) break;
+  }
+  if (ring.size() != n + 1 || ring.back() != ring.front()) return false;
+  ring.pop_back();
+  {
+    std::vector<uint32_t> distinct = ring;
+    std::sort(distinct.begin(), distinct.end());
+    if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) return false;
+  }
+  double before = 1e300;
+  for (uint32_t t : around_ab) before = std::min(before, probe_quality(c, c.tets[t], probe));
+  // Each fan of the ring from one of its vertices r0: for every ring edge rj–rj+1 not at r0,
+  // the old tetrahedron a–b–rj–rj+1 with b (then a) replaced by r0 — positive exactly when
+  // the edge a–b crosses the fan's triangle r0–rj–rj+1 (the 3-2 flip is the case n = 3).
   auto all_interface = [&](const std::array<uint32_t, 4>& t) {
     return c.on_interface[t[0]] && c.on_interface[t[1]] && c.on_interface[t[2]] && c.on_interface[t[3]];
   };
-  if (all_interface(top) || all_interface(bottom)) return false;  // no caps (see flip_23)
-  double before = 1e300;
-  for (uint32_t t : ring) before = std::min(before, probe_quality(c, c.tets[t], probe));
-  const double after = std::min(probe_quality(c, top, probe), probe_quality(c, bottom, probe));
-  if (!(after > before + kGain)) return false;
-  if (!positive_tet(c, top) || !positive_tet(c, bottom)) return false;
-  adj.set_tet(c, ring[0], top);
-  adj.set_tet(c, ring[1], bottom);
-  adj.erase_tet(c, ring[2]);
-  ++stats.flips32;
+  double best = before + kGain;
+  std::vector<std::array<uint32_t, 4>> best_made, made;
+  for (size_t apex = 0; apex < n; ++apex) {
+    const uint32_t r0 = ring[apex];
+    made.clear();
+    bool ok = true;
+    double q = 1e300;
+    for (size_t j = 0; j < n && ok; ++j) {
+      const uint32_t x = ring[j], y = ring[(j + 1) % n];
+      if (x == r0 || y == r0) continue;
+      // No new edge between two interface points through the outside (see flip_23).
+      if (j != (apex + 1) % n && c.on_interface[r0] && c.on_interface[x]) ok = false;
+      std::array<uint32_t, 4> top = c.tets[ring_tet[j]], bottom = top;
+      std::replace(top.begin(), top.end(), b, r0);
+      std::replace(bottom.begin(), bottom.end(), a, r0);
+      if (all_interface(top) || all_interface(bottom)) ok = false;
+      q = std::min({q, probe_quality(c, top, probe), probe_quality(c, bottom, probe)});
+      made.push_back(top);
+      made.push_back(bottom);
+    }
+    if (!ok || !(q > best)) continue;
+    for (const auto& m : made) ok = ok && positive_tet(c, m);
+    if (!ok) continue;
+    best = q;
+    best_made = made;
+  }
+  if (best_made.empty()) return false;
+  // n old slots for 2(n − 2) new tetrahedra: reuse, then append or erase.
+  std::vector<uint32_t> slots = around_ab;
+  std::sort(slots.begin(), slots.end());
+  size_t k = 0;
+  for (; k < std::min(slots.size(), best_made.size()); ++k) adj.set_tet(c, slots[k], best_made[k]);
+  for (size_t i = k; i < best_made.size(); ++i) adj.add_tet(c, best_made[i], TetComplex::kOutside);
+  for (size_t i = slots.size(); i-- > k;) adj.erase_tet(c, slots[i]);  // last first: indices stay valid
+  if (n == 3)
+    ++stats.flips32;
+  else
+    ++stats.edge_removals;
   return true;
 }
 
@@ -193,13 +246,13 @@ namespace {
 // Flips and relocations that improve tetrahedron t (its faces, its edges, its free vertices);
 // with max_length > 0, a split of its longest edge not between interface points if longer.
 bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& probe, FlipStats& stats, int skip_corner,
-                 double max_length = 0) {
+                 double max_length, bool relocate, int max_ring) {
   const std::array<uint32_t, 4> T = c.tets[t];
   // 3-2 flips of its edges (opposite skip_corner first when blocked).
   static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   for (const auto& e : kEdge) {
     if (e[0] == skip_corner || e[1] == skip_corner) continue;
-    if (flip_32(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats)) return true;
+    if (remove_edge(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats, max_ring)) return true;
   }
   for (int f = 0; f < 4; ++f) {
     if (skip_corner >= 0 && f != skip_corner) continue;
@@ -208,7 +261,7 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   if (skip_corner >= 0)
     for (const auto& e : kEdge)
       if (e[0] == skip_corner || e[1] == skip_corner)
-        if (flip_32(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats)) return true;
+        if (remove_edge(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats, max_ring)) return true;
   if (max_length > 0) {
     double longest = max_length;
     int best = -1;
@@ -226,6 +279,7 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
       return true;
     }
   }
+  if (!relocate) return false;
   bool moved = false;
   for (int i = 0; i < 4; ++i)
     if (i != skip_corner) moved = relocate_free_vertex(c, adj, T[size_t(i)], probe, stats) || moved;
@@ -260,7 +314,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
       const long t = find_tet(c, adj, corners);
       if (t < 0) continue;
       const int i = int(std::find(corners.begin(), corners.end(), v) - corners.begin());
-      any = improve_tet(c, adj, uint32_t(t), probe, stats, i) || any;
+      any = improve_tet(c, adj, uint32_t(t), probe, stats, i, 0, true, 6) || any;
     }
     changed = changed || any;
     if (!any) break;
@@ -269,7 +323,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
 }
 
 FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<uint32_t>& points, double threshold,
-                            double max_length, int passes) {
+                            double max_length, int passes, bool relocate) {
   FlipStats stats;
   const Probe none;
   for (int pass = 0; pass < passes; ++pass) {
@@ -291,7 +345,7 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
     for (const auto& [q, corners] : bad) {
       const long t = find_tet(c, adj, corners);
       if (t < 0) continue;
-      any = improve_tet(c, adj, uint32_t(t), none, stats, -1, max_length) || any;
+      any = improve_tet(c, adj, uint32_t(t), none, stats, -1, max_length, relocate, 3) || any;
     }
     if (!any) break;
   }

@@ -4,7 +4,8 @@
 // continue ... smoothing of the interior/exterior meshes improves performance"; after Misztal
 // and Bærentzen). Three operations, all on the tetrahedra around the interface:
 //  - 2-3 flips (a face shared by two tetrahedra becomes an edge shared by three) and
-//  - 3-2 flips (the reverse), only among OUTSIDE tetrahedra: the union of the flipped
+//  - 3-2 flips (the reverse) and their generalisation, edge removal (4-4, 5-6, 6-8), only
+//    among OUTSIDE tetrahedra: the union of the flipped
 //    tetrahedra keeps its boundary, so no interface face appears or disappears and no label
 //    boundary is crossed;
 //  - relocation of free vertices (neither on the interface, nor on the box, nor frozen);
@@ -37,6 +38,7 @@ struct FlipStats {
   long flips32 = 0;
   long relocated = 0;
   long splits = 0;
+  long edge_removals = 0;  // edges of 4 to 6 tetrahedra removed (4-4, 5-6, 6-8 flips)
 };
 
 double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, const Probe& probe);
@@ -47,6 +49,12 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
 // The 3-2 flip removing edge a–b; false unless exactly three outside tetrahedra surround it,
 // the two new ones are positive and the worst quality rises.
 bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats);
+// Edge removal, the 3-2 flip's generalisation: the n ≤ max_ring outside tetrahedra around edge
+// a–b become 2(n − 2) (a fan of the ring from its best vertex, joined to a and to b); false
+// unless they close around the edge, all new ones are positive, none joins two interface
+// points by a new edge or has four interface corners, and the worst quality rises.
+bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
+                 int max_ring = 6);
 // Moves a free vertex to the best of a few candidates (its neighbours' mean, pushes away from
 // its worst tetrahedron's opposite face) if that raises its worst quality.
 bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Probe& probe, FlipStats& stats);
@@ -64,8 +72,8 @@ uint32_t split_free_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
 // Quality repair around the given points (sorted): the outside tetrahedra that use them and
 // whose quality is below `threshold` are improved, worst first, by flips, else by splitting
 // their longest edge that is not between interface points if it is longer than `max_length`,
-// else by relocation; for up to `passes` passes. Deterministic.
+// else (with `relocate`) by relocation; for up to `passes` passes. Deterministic.
 FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<uint32_t>& points, double threshold,
-                            double max_length, int passes = 2);
+                            double max_length, int passes = 2, bool relocate = false);
 
 }  // namespace phellem::bark
