@@ -26,7 +26,7 @@ struct RepairStats {
 };
 
 struct RepairSettings {
-  double quality_threshold = 0.05;  // outside tetrahedra below this tet_quality are improved
+  double quality_threshold = 0.01;  // outside tetrahedra below this tet_quality are improved
   int quality_passes = 2;
   double free_split_length = 0;  // × max_length: longer free edges of poor tetrahedra split (0: none)
 };

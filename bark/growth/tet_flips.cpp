@@ -1,5 +1,7 @@
 #include "bark/growth/tet_flips.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <tuple>
 
@@ -326,26 +328,54 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
                             double max_length, int passes, bool relocate) {
   FlipStats stats;
   const Probe none;
+  std::vector<uint8_t> dirty(c.points.size(), 0);
   for (int pass = 0; pass < passes; ++pass) {
-    std::vector<std::pair<double, std::array<uint32_t, 4>>> bad;
-    for (uint32_t p : points)
-      for (uint32_t t : adj.around(p)) {
-        if (c.label[t] != TetComplex::kOutside) continue;
-        // Each tetrahedron once: from its smallest listed corner.
-        bool first = true;
-        for (uint32_t w : c.tets[t])
-          if (w < p && std::binary_search(points.begin(), points.end(), w)) first = false;
-        if (!first) continue;
-        const double q = tet_quality(c, c.tets[t]);
-        if (q < threshold) bad.push_back({q, c.tets[t]});
+    // The poor outside tetrahedra at the points (in the first pass all of them, afterwards only
+    // those at points the previous pass changed), each once: from its smallest listed corner.
+    // Collected in fixed blocks of points in parallel, joined in order: deterministic.
+    constexpr size_t kBlock = 1024;
+    const size_t blocks = (points.size() + kBlock - 1) / kBlock;
+    std::vector<std::vector<std::pair<double, std::array<uint32_t, 4>>>> found(blocks);
+    tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+      for (size_t k = b * kBlock; k < std::min(points.size(), (b + 1) * kBlock); ++k) {
+        const uint32_t p = points[k];
+        for (uint32_t t : adj.around(p)) {
+          if (c.label[t] != TetComplex::kOutside) continue;
+          bool first = true, near_change = pass == 0;
+          for (uint32_t w : c.tets[t]) {
+            if (w < p && std::binary_search(points.begin(), points.end(), w)) first = false;
+            near_change = near_change || w >= dirty.size() || dirty[w];
+          }
+          if (!first || !near_change) continue;
+          const double q = tet_quality(c, c.tets[t]);
+          if (q < threshold) found[b].push_back({q, c.tets[t]});
+        }
       }
+    });
+    std::vector<std::pair<double, std::array<uint32_t, 4>>> bad;
+    for (const auto& f : found) bad.insert(bad.end(), f.begin(), f.end());
+    std::fill(dirty.begin(), dirty.end(), 0);
+    dirty.resize(c.points.size(), 0);
     if (bad.empty()) break;
-    std::sort(bad.begin(), bad.end());
+    // The worst first, and a bounded number a pass (a coarse outside can hold tens of
+    // thousands of needles to the box corners, most of which no flip improves): the step's
+    // cost stays linear in the interface, and the rest waits for the next step.
+    const size_t budget = std::max<size_t>(64, points.size() / 4);
+    if (bad.size() > budget) {
+      std::partial_sort(bad.begin(), bad.begin() + long(budget), bad.end());
+      bad.resize(budget);
+    } else {
+      std::sort(bad.begin(), bad.end());
+    }
     bool any = false;
     for (const auto& [q, corners] : bad) {
       const long t = find_tet(c, adj, corners);
       if (t < 0) continue;
-      any = improve_tet(c, adj, uint32_t(t), none, stats, -1, max_length, relocate, 3) || any;
+      if (improve_tet(c, adj, uint32_t(t), none, stats, -1, max_length, relocate, 3)) {
+        any = true;
+        for (uint32_t w : corners)
+          if (w < dirty.size()) dirty[w] = 1;
+      }
     }
     if (!any) break;
   }
