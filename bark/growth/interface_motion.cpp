@@ -31,6 +31,9 @@ bool all_positive(const TetComplex& c, std::span<const uint32_t> tets) {
 double move_towards(TetComplex& c, const TetAdjacency& adj, uint32_t v, const Eigen::Vector3d& target) {
   const Eigen::Vector3d start = c.points[v];
   const auto tets = adj.around(v);
+  c.points[v] = target;  // most moves go the whole way: try that first
+  if (all_positive(c, tets)) return 1;
+  c.points[v] = start;
   double s = 1;
   for (uint32_t t : tets) {
     const double v0 = signed_volume(c, c.tets[t], v, start), v1 = signed_volume(c, c.tets[t], v, target);
