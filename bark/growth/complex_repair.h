@@ -20,7 +20,7 @@ struct RepairStats {
   long splits = 0;
   long collapses = 0;
   long flips23 = 0;
-  long flips32 = 0;
+  long flips32 = 0;      // 3-2 flips and edge removals (4-4, 5-6, 6-8)
   long relocated = 0;
   long free_splits = 0;  // splits of long non-interface edges of poor outside tetrahedra
 };
@@ -28,7 +28,9 @@ struct RepairStats {
 struct RepairSettings {
   double quality_threshold = 0.01;  // outside tetrahedra below this tet_quality are improved
   int quality_passes = 2;
-  double free_split_length = 0;  // × max_length: longer free edges of poor tetrahedra split (0: none)
+  // × max_length: longer free edges of poor tetrahedra are split (0: none; splitting the
+  // needles of a coarse outside made the lag worse in the sphere test, so it is off).
+  double free_split_length = 0;
 };
 
 // Band: min_length < max_length / 2 keeps a split edge's halves above the lower bound.
