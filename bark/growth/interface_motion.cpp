@@ -1,38 +1,58 @@
 #include "bark/growth/interface_motion.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
+
+#include "bark/growth/tet_flips.h"
 
 namespace phellem::bark {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 constexpr int kMaxHalvings = 6;
+constexpr int kRounds = 4;  // move, retessellate what blocks, move on
 
-bool positive(const TetComplex& c, const std::array<uint32_t, 4>& t) {
-  auto p = [&](uint32_t i) { return K::Point_3(c.points[i].x(), c.points[i].y(), c.points[i].z()); };
-  return CGAL::orientation(p(t[0]), p(t[1]), p(t[2]), p(t[3])) == CGAL::POSITIVE;
+double signed_volume(const TetComplex& c, const std::array<uint32_t, 4>& t, uint32_t v, const Eigen::Vector3d& x) {
+  auto p = [&](int i) -> const Eigen::Vector3d& { return t[size_t(i)] == v ? x : c.points[t[size_t(i)]]; };
+  return (p(1) - p(0)).cross(p(2) - p(0)).dot(p(3) - p(0));
 }
 
-// The tetrahedra around each point.
-std::vector<std::vector<uint32_t>> incident_tets(const TetComplex& c) {
-  std::vector<std::vector<uint32_t>> around(c.points.size());
-  for (uint32_t t = 0; t < c.tets.size(); ++t)
-    for (uint32_t v : c.tets[t]) around[v].push_back(t);
-  return around;
-}
-
-bool all_positive(const TetComplex& c, const std::vector<uint32_t>& tets) {
+bool all_positive(const TetComplex& c, std::span<const uint32_t> tets) {
   for (uint32_t t : tets)
-    if (!positive(c, c.tets[t])) return false;
+    if (!positive_tet(c, c.tets[t])) return false;
   return true;
+}
+
+// Moves v from where it is towards `target` as far as its tetrahedra allow: the whole way, or
+// most of the way to where the first would flatten (the volumes are affine along the segment),
+// halved while the exact predicate refuses. Returns 1 when it arrived, 0 when it stayed.
+double move_towards(TetComplex& c, const TetAdjacency& adj, uint32_t v, const Eigen::Vector3d& target) {
+  const Eigen::Vector3d start = c.points[v];
+  const auto tets = adj.around(v);
+  c.points[v] = target;  // most moves go the whole way: try that first
+  if (all_positive(c, tets)) return 1;
+  c.points[v] = start;
+  double s = 1;
+  for (uint32_t t : tets) {
+    const double v0 = signed_volume(c, c.tets[t], v, start), v1 = signed_volume(c, c.tets[t], v, target);
+    if (v1 <= 0) s = std::min(s, 0.9 * v0 / (v0 - v1));
+  }
+  for (int halvings = 0; halvings <= kMaxHalvings; ++halvings, s *= 0.5) {
+    c.points[v] = s == 1 ? target : Eigen::Vector3d(start + s * (target - start));
+    if (all_positive(c, tets)) return s;
+  }
+  c.points[v] = start;
+  return 0;
 }
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c) { return interface_normals(c, c.interface_faces()); }
+std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c) {
+  const TetAdjacency adj(c);
+  return interface_normals(c, interface_faces(c, adj));
+}
 
 std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces) {
   std::vector<Eigen::Vector3d> n(c.points.size(), Eigen::Vector3d::Zero());
@@ -46,52 +66,98 @@ std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c, const std::v
 }
 
 InterfaceStepStats advance_interface(TetComplex& c, const GrowthFunction& growth, double t0, double t1) {
+  TetAdjacency adj(c);
+  return advance_interface(c, adj, growth, t0, t1);
+}
+
+InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const GrowthFunction& growth, double t0, double t1) {
   InterfaceStepStats st;
-  const std::vector<Eigen::Vector3d> normals = interface_normals(c);
-  const auto around = incident_tets(c);
-  // Eq. (1) integrated over the step: the thickening along the normal. Vertices move one at a
-  // time in index order, each checked against its own tetrahedra: deterministic, and a
-  // vertex never validates against a neighbour's half-made move.
-  for (uint32_t v = 0; v < c.points.size(); ++v) {
-    if (!c.on_interface[v] || c.frozen[v] || normals[v].squaredNorm() == 0) continue;
-    const Eigen::Vector3d start = c.points[v];
-    const double d = growth.thickening(t0, t1, start.cast<float>(), normals[v].cast<float>());
-    if (!(d != 0)) continue;
-    double step = d;
-    int halvings = 0;
-    for (;; ++halvings) {
-      c.points[v] = start + step * normals[v];
-      if (all_positive(c, around[v])) break;
-      if (halvings == kMaxHalvings) {
-        c.points[v] = start;
-        break;
-      }
-      step *= 0.5;
-    }
-    if (c.points[v] == start)
-      ++st.clamped;
-    else if (halvings > 0)
-      ++st.shortened;
-    else
-      ++st.moved;
+  const std::vector<Eigen::Vector3d> normals = interface_normals(c, interface_faces(c, adj));
+  std::vector<uint32_t> movers;
+  for (uint32_t v = 0; v < c.points.size(); ++v)
+    if (c.on_interface[v] && !c.frozen[v] && normals[v].squaredNorm() > 0) movers.push_back(v);
+  // Eq. (1) integrated over the step: the thickening along the normal (a pure function of the
+  // vertex, evaluated in parallel).
+  std::vector<Eigen::Vector3d> target(movers.size());
+  std::vector<uint8_t> active(movers.size(), 0);
+  tbb::parallel_for(size_t(0), movers.size(), [&](size_t i) {
+    const uint32_t v = movers[i];
+    const double d = growth.thickening(t0, t1, c.points[v].cast<float>(), normals[v].cast<float>());
+    target[i] = c.points[v] + d * normals[v];
+    active[i] = d != 0 && std::isfinite(d);
+  });
+  const std::vector<Eigen::Vector3d> start = [&] {
+    std::vector<Eigen::Vector3d> s(movers.size());
+    for (size_t i = 0; i < movers.size(); ++i) s[i] = c.points[movers[i]];
+    return s;
+  }();
+  // Vertices move one at a time in index order, each checked against its own tetrahedra:
+  // deterministic, and a vertex never validates against a neighbour's half-made move. Those
+  // that stopped short get the tetrahedra in their way retessellated and try again.
+  FlipStats fs;
+  std::vector<size_t> pending;
+  for (size_t i = 0; i < movers.size(); ++i)
+    if (active[i]) pending.push_back(i);
+  for (int round = 0; round < kRounds && !pending.empty(); ++round) {
+    std::vector<size_t> blocked;
+    for (size_t i : pending)
+      if (move_towards(c, adj, movers[i], target[i]) < 1) blocked.push_back(i);
+    if (round + 1 == kRounds) break;
+    std::vector<size_t> retry;
+    for (size_t i : blocked)
+      if (unblock_vertex(c, adj, movers[i], target[i], fs)) retry.push_back(i);
+    pending = std::move(retry);
   }
-  // Smoothing of the free vertices: towards the mean of their tetrahedra's other corners.
+  for (size_t i = 0; i < movers.size(); ++i) {
+    if (!active[i]) continue;
+    const uint32_t v = movers[i];
+    if (c.points[v] == target[i])
+      ++st.moved;
+    else if (c.points[v] == start[i])
+      ++st.clamped;
+    else
+      ++st.shortened;
+  }
+  st.flips = fs.flips23 + fs.flips32 + fs.edge_removals;
+  st.relocated = fs.relocated;
+
+  // Smoothing of the free vertices within two rings of the interface: towards the mean of
+  // their tetrahedra's other corners, where every tetrahedron stays positive and the worst
+  // quality does not drop.
+  std::vector<uint8_t> ring(c.points.size(), 0);
+  for (uint32_t v = 0; v < c.points.size(); ++v)
+    if (c.on_interface[v])
+      for (uint32_t t : adj.around(v))
+        for (uint32_t w : c.tets[t])
+          if (!c.on_interface[w]) ring[w] = 1;
+  for (uint32_t v = 0; v < c.points.size(); ++v)
+    if (ring[v] == 1)
+      for (uint32_t t : adj.around(v))
+        for (uint32_t w : c.tets[t])
+          if (!c.on_interface[w] && !ring[w]) ring[w] = 2;
   for (uint32_t v = 0; v < c.points.size(); ++v) {
-    if (c.on_interface[v] || c.on_box[v] || c.frozen[v] || around[v].empty()) continue;
+    if (!ring[v] || c.on_box[v] || c.frozen[v]) continue;
+    const auto around = adj.around(v);
+    if (around.empty()) continue;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     int n = 0;
-    for (uint32_t t : around[v])
+    double before = 1e300;
+    for (uint32_t t : around) {
+      before = std::min(before, tet_quality(c, c.tets[t]));
       for (uint32_t w : c.tets[t])
         if (w != v) {
           mean += c.points[w];
           ++n;
         }
-    const Eigen::Vector3d start = c.points[v];
-    c.points[v] = start + 0.5 * (mean / n - start);
-    if (all_positive(c, around[v]))
+    }
+    const Eigen::Vector3d from = c.points[v];
+    c.points[v] = from + 0.5 * (mean / n - from);
+    double after = 1e300;
+    for (uint32_t t : around) after = std::min(after, tet_quality(c, c.tets[t]));
+    if (after >= before && all_positive(c, around))
       ++st.smoothed;
     else
-      c.points[v] = start;
+      c.points[v] = from;
   }
   return st;
 }

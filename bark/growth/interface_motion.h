@@ -3,15 +3,19 @@
 // its interface faces) by the growth function's thickening over the step, and every
 // tetrahedron stays positively oriented (CGAL's exact predicate): a move that would invert
 // one is halved, up to kMaxHalvings times, then dropped (the vertex is clamped for this
-// step). Afterwards the free vertices (neither on the interface nor on the box) are smoothed
-// towards their neighbours' mean where that keeps every tetrahedron positive, making room
-// for the next step.
-// Not yet here (issue 24, to come): the local repair of deformable simplicial complexes
-// (flips, splits, collapses) that keeps interface edges in a length band, obstacles and
-// contact, rings, UVs and crack coupling.
+// step). A move that would flatten or invert a tetrahedron first goes as far as it can, then
+// the DSC's local retessellation (tet_flips.h: flips of outside tetrahedra, relocation of free
+// vertices) removes what blocks it and the motion continues, for a few rounds (sec. 3: "the
+// vertex motion is temporarily limited to the point where it yields a degenerate (flat)
+// tetrahedron, which is removed by a local retesselation allowing the vertex motion to
+// continue"). Afterwards the free vertices near the interface (within two rings of it) are
+// smoothed towards their neighbours' mean where that keeps every tetrahedron positive and does
+// not lower their worst quality, making room for the next step.
+// The rest of the step's repair (splits, collapses, quality flips) is growth_repair_step
+// (complex_repair.h). Not yet here: obstacles and contact, UVs and crack coupling.
 #pragma once
 
-#include "bark/growth/tet_complex.h"
+#include "bark/growth/tet_adjacency.h"
 #include "bark/growth/weibull_growth.h"
 
 namespace phellem::bark {
@@ -21,6 +25,8 @@ struct InterfaceStepStats {
   long shortened = 0;   // ... that moved part of it (halved)
   long clamped = 0;     // ... that could not move without inverting a tetrahedron
   long smoothed = 0;    // free vertices moved by the smoothing
+  long flips = 0;       // 2-3 and 3-2 flips made to unblock moves
+  long relocated = 0;   // free vertices moved to unblock moves
 };
 
 // The area-weighted outward normals of the interface faces at each point (0 elsewhere), from
@@ -31,5 +37,7 @@ std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c);
 // Moves the interface from age t0 to age t1 (years). Deterministic: the same complex and
 // ages give the same result.
 InterfaceStepStats advance_interface(TetComplex& c, const GrowthFunction& growth, double t0, double t1);
+// The same, keeping an adjacency the caller goes on using in step.
+InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const GrowthFunction& growth, double t0, double t1);
 
 }  // namespace phellem::bark

@@ -4,16 +4,18 @@
 // two with its label. The new vertex goes where the ends' normals say the smooth surface is
 // (half of Phong tessellation's pull to their tangent planes), or on the chord's midpoint —
 // which leaves both halves of a positive tetrahedron positive — when that would invert one.
-// Not yet here: coarsening (collapses of short edges) and flips.
+// Coarsening is in interface_coarsening.h, flips in tet_flips.h, the step's order in complex_repair.h.
 #pragma once
 
-#include "bark/growth/tet_complex.h"
+#include "bark/growth/tet_adjacency.h"
 
 namespace phellem::bark {
 
 // Splits interface edges longer than `max_length` (m), longest first, until none is or
 // `max_splits` were made; returns the number of splits. Deterministic.
 long split_long_interface_edges(TetComplex& c, double max_length, long max_splits = 1000000);
+// The same, keeping an adjacency the caller goes on using in step.
+long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, double max_length, long max_splits = 1000000);
 
 // The interface's edges (each once, smaller index first).
 std::vector<std::array<uint32_t, 2>> interface_edges(const TetComplex& c);

@@ -1,0 +1,30 @@
+#include "bark/growth/complex_repair.h"
+
+#include "bark/growth/interface_coarsening.h"
+#include "bark/growth/interface_refinement.h"
+#include "bark/growth/tet_flips.h"
+
+namespace phellem::bark {
+
+RepairStats growth_repair_step(TetComplex& c, double min_length, double max_length, const RepairSettings& settings) {
+  TetAdjacency adj(c);
+  return growth_repair_step(c, adj, min_length, max_length, settings);
+}
+
+RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_length, double max_length,
+                               const RepairSettings& settings) {
+  RepairStats st;
+  st.splits = split_long_interface_edges(c, adj, max_length);
+  st.collapses = collapse_short_interface_edges(c, adj, min_length, max_length);
+  std::vector<uint32_t> interface;
+  for (uint32_t v = 0; v < c.points.size(); ++v)
+    if (c.on_interface[v]) interface.push_back(v);
+  const FlipStats fs = improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length, settings.quality_passes);
+  st.flips23 = fs.flips23;
+  st.flips32 = fs.flips32 + fs.edge_removals;
+  st.relocated = fs.relocated;
+  st.free_splits = fs.splits;
+  return st;
+}
+
+}  // namespace phellem::bark

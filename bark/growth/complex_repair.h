@@ -1,0 +1,41 @@
+// The repair of the deformable simplicial complex after each motion of the interface
+// (Kratt et al., Woodification, sec. 3; Misztal and Bærentzen): in this order
+//  1. interface edges longer than the band's upper bound are split (interface_refinement.h),
+//  2. interface edges shorter than its lower bound are collapsed (interface_coarsening.h),
+//  3. the poor outside tetrahedra around the interface are flipped, their long free edges
+//     split and their free vertices relocated (tet_flips.h), so that the next motion is not
+//     blocked.
+// A growth step is
+//   advance_interface(c, growth, t0, t1);
+//   growth_repair_step(c, band_min, band_max);
+// Every operation keeps every tetrahedron positive (exact predicate), the labels, and the
+// interface a closed oriented 2-manifold. Deterministic, whatever the thread count.
+#pragma once
+
+#include "bark/growth/tet_adjacency.h"
+
+namespace phellem::bark {
+
+struct RepairStats {
+  long splits = 0;
+  long collapses = 0;
+  long flips23 = 0;
+  long flips32 = 0;      // 3-2 flips and edge removals (4-4, 5-6, 6-8)
+  long relocated = 0;
+  long free_splits = 0;  // splits of long non-interface edges of poor outside tetrahedra
+};
+
+struct RepairSettings {
+  double quality_threshold = 0.01;  // outside tetrahedra below this tet_quality are improved
+  int quality_passes = 2;
+  // × max_length: longer free edges of poor tetrahedra are split (0: none; splitting the
+  // needles of a coarse outside made the lag worse in the sphere test, so it is off).
+  double free_split_length = 0;
+};
+
+// Band: min_length < max_length / 2 keeps a split edge's halves above the lower bound.
+RepairStats growth_repair_step(TetComplex& c, double min_length, double max_length, const RepairSettings& settings = {});
+RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_length, double max_length,
+                               const RepairSettings& settings = {});
+
+}  // namespace phellem::bark

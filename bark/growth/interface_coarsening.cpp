@@ -1,0 +1,239 @@
+#include "bark/growth/interface_coarsening.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace phellem::bark {
+
+namespace {
+
+template <class T>
+void sort_unique(std::vector<T>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+template <class T>
+bool intersects(const std::vector<T>& a, const std::vector<T>& b) {
+  auto i = a.begin(), j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i < *j)
+      ++i;
+    else if (*j < *i)
+      ++j;
+    else
+      return true;
+  }
+  return false;
+}
+
+// The interface faces' corners next to v (the interface's 1-ring), sorted.
+void interface_neighbours(const TetComplex& c, const TetAdjacency& adj, uint32_t v, std::vector<uint32_t>& out) {
+  out.clear();
+  for (uint32_t t : adj.around(v)) {
+    const auto& T = c.tets[t];
+    for (int j = 0; j < 4; ++j) {
+      if (T[size_t(j)] == v) continue;
+      const uint32_t p = T[size_t(kTetFace[j][0])], q = T[size_t(kTetFace[j][1])], r = T[size_t(kTetFace[j][2])];
+      if (!c.on_interface[p] || !c.on_interface[q] || !c.on_interface[r]) continue;
+      const long u = adj.across(c, t, j);
+      if (u < 0 || c.label[size_t(u)] == c.label[t]) continue;
+      for (uint32_t w : {p, q, r})
+        if (w != v) out.push_back(w);
+    }
+  }
+  sort_unique(out);
+}
+
+bool is_interface_face(const TetComplex& c, const TetAdjacency& adj, uint32_t a, uint32_t p, uint32_t q) {
+  for (uint32_t t : adj.around(a)) {
+    const auto& T = c.tets[t];
+    if (std::find(T.begin(), T.end(), p) == T.end() || std::find(T.begin(), T.end(), q) == T.end()) continue;
+    for (int j = 0; j < 4; ++j)
+      if (T[size_t(j)] != a && T[size_t(j)] != p && T[size_t(j)] != q) {
+        const long u = adj.across(c, t, j);
+        return u >= 0 && c.label[size_t(u)] != c.label[t];
+      }
+  }
+  return false;
+}
+
+// The link condition of the tetrahedral complex, Lk(a) ∩ Lk(b) = Lk(ab), on vertices, edges
+// and triangles.
+bool link_condition(const TetComplex& c, const TetAdjacency& adj, uint32_t a, uint32_t b, const std::vector<uint32_t>& ab) {
+  std::vector<uint32_t> ring, va, vb;
+  std::vector<std::array<uint32_t, 2>> ring_edges, ea, eb;
+  std::vector<std::array<uint32_t, 3>> fa, fb;
+  for (uint32_t t : ab) {
+    std::array<uint32_t, 2> e{};
+    int n = 0;
+    for (uint32_t w : c.tets[t])
+      if (w != a && w != b) e[size_t(n++)] = w;
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+    ring.push_back(e[0]);
+    ring.push_back(e[1]);
+    ring_edges.push_back(e);
+  }
+  sort_unique(ring);
+  sort_unique(ring_edges);
+  auto collect = [&](uint32_t v, uint32_t other, std::vector<uint32_t>& verts, std::vector<std::array<uint32_t, 2>>& edges,
+                     std::vector<std::array<uint32_t, 3>>& faces) {
+    for (uint32_t t : adj.around(v)) {
+      std::array<uint32_t, 3> f{};
+      int n = 0;
+      for (uint32_t w : c.tets[t])
+        if (w != v) f[size_t(n++)] = w;
+      std::sort(f.begin(), f.end());
+      const bool has_other = std::binary_search(f.begin(), f.end(), other);
+      for (uint32_t w : f)
+        if (w != other) verts.push_back(w);
+      if (has_other) continue;  // edges and triangles through the other end are not in both links
+      faces.push_back(f);
+      edges.push_back({f[0], f[1]});
+      edges.push_back({f[0], f[2]});
+      edges.push_back({f[1], f[2]});
+    }
+    sort_unique(verts);
+    sort_unique(edges);
+    sort_unique(faces);
+  };
+  collect(a, b, va, ea, fa);
+  collect(b, a, vb, eb, fb);
+  std::vector<uint32_t> common;
+  std::set_intersection(va.begin(), va.end(), vb.begin(), vb.end(), std::back_inserter(common));
+  if (common != ring) return false;
+  std::vector<std::array<uint32_t, 2>> common_edges;
+  std::set_intersection(ea.begin(), ea.end(), eb.begin(), eb.end(), std::back_inserter(common_edges));
+  for (const auto& e : common_edges)
+    if (!std::binary_search(ring_edges.begin(), ring_edges.end(), e)) return false;
+  return !intersects(fa, fb);
+}
+
+// Removes `gone` into `keep` placed at x, if every condition holds.
+bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone, const Eigen::Vector3d& x,
+                  const std::vector<uint32_t>& ab, double max_length) {
+  const Eigen::Vector3d keep_at = c.points[keep];
+  // No interface edge may come out longer than the band's upper bound (the splits would undo
+  // the collapse).
+  for (uint32_t v : {keep, gone})
+    for (uint32_t t : adj.around(v))
+      for (uint32_t w : c.tets[t])
+        if (w != keep && w != gone && c.on_interface[w] && (c.points[w] - x).norm() > max_length) return false;
+  double before = 1e300;
+  for (uint32_t v : {keep, gone})
+    for (uint32_t t : adj.around(v)) before = std::min(before, tet_quality(c, c.tets[t]));
+  c.points[keep] = x;
+  bool ok = true;
+  double after = 1e300;
+  for (uint32_t v : {keep, gone}) {
+    for (uint32_t t : adj.around(v)) {
+      if (std::binary_search(ab.begin(), ab.end(), t)) continue;
+      std::array<uint32_t, 4> T = c.tets[t];
+      std::replace(T.begin(), T.end(), gone, keep);
+      if (!positive_tet(c, T)) {
+        ok = false;
+        break;
+      }
+      after = std::min(after, tet_quality(c, T));
+    }
+    if (!ok) break;
+  }
+  // Not much worse than before: at least a fair quality or as good as the worst it replaces.
+  ok = ok && (after >= 0.1 || after >= before);
+  if (!ok) {
+    c.points[keep] = keep_at;
+    return false;
+  }
+  const std::vector<uint32_t> moved(adj.around(gone).begin(), adj.around(gone).end());
+  for (uint32_t t : moved) {
+    if (std::binary_search(ab.begin(), ab.end(), t)) continue;
+    std::array<uint32_t, 4> T = c.tets[t];
+    std::replace(T.begin(), T.end(), gone, keep);
+    adj.set_tet(c, t, T);
+  }
+  for (auto it = ab.rbegin(); it != ab.rend(); ++it) adj.erase_tet(c, *it);  // last first: indices stay valid
+  if (x != keep_at && !c.uv.empty()) {
+    const double s = (x - keep_at).norm() / std::max(1e-300, (c.points[gone] - keep_at).norm());
+    c.uv[keep] = (1 - s) * c.uv[keep] + s * c.uv[gone];
+  }
+  c.on_interface[gone] = 0;
+  return true;
+}
+
+}  // namespace
+
+bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, double max_length) {
+  if (a == b || !c.on_interface[a] || !c.on_interface[b] || c.on_box[a] || c.on_box[b]) return false;
+  if (c.frozen[a] && c.frozen[b]) return false;
+  std::vector<uint32_t> ab;
+  adj.edge_tets(c, a, b, ab);
+  if (ab.empty()) return false;
+  std::sort(ab.begin(), ab.end());
+  // The two interface faces on the edge and their apexes p, q.
+  std::vector<uint32_t> apex;
+  for (uint32_t t : ab) {
+    const auto& T = c.tets[t];
+    for (int j = 0; j < 4; ++j) {
+      if (T[size_t(j)] == a || T[size_t(j)] == b) continue;
+      const long u = adj.across(c, t, j);
+      if (u >= 0 && c.label[size_t(u)] != c.label[t])
+        for (uint32_t w : T)
+          if (w != a && w != b && w != T[size_t(j)]) apex.push_back(w);
+    }
+  }
+  sort_unique(apex);
+  if (apex.size() != 2) return false;
+  // The interface's link condition: a and b share exactly p and q, and neither a–p–q nor
+  // b–p–q is a face (the interface is not a tetrahedron's four faces).
+  std::vector<uint32_t> na, nb, common;
+  interface_neighbours(c, adj, a, na);
+  interface_neighbours(c, adj, b, nb);
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+  if (common != apex) return false;
+  if (is_interface_face(c, adj, a, apex[0], apex[1]) || is_interface_face(c, adj, b, apex[0], apex[1])) return false;
+  if (!link_condition(c, adj, a, b, ab)) return false;
+  // Which end goes: never a frozen one; else the one the refinement added (no input vertex),
+  // else the later one.
+  uint32_t keep = a, gone = b;
+  if (c.frozen[b] || (c.source_vertex[b] >= 0 && c.source_vertex[a] < 0)) std::swap(keep, gone);
+  const Eigen::Vector3d mid = 0.5 * (c.points[a] + c.points[b]);
+  if (!c.frozen[keep] && try_collapse(c, adj, keep, gone, mid, ab, max_length)) return true;
+  if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
+  if (!c.frozen[gone] && !c.frozen[keep]) {
+    std::swap(keep, gone);
+    if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
+  }
+  return false;
+}
+
+long collapse_short_interface_edges(TetComplex& c, double min_length, double max_length) {
+  TetAdjacency adj(c);
+  return collapse_short_interface_edges(c, adj, min_length, max_length);
+}
+
+long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length, double max_length) {
+  long collapses = 0;
+  for (int pass = 0; pass < 8; ++pass) {
+    std::vector<std::tuple<double, uint32_t, uint32_t>> todo;
+    for (const auto& f : interface_faces(c, adj))
+      for (int e = 0; e < 3; ++e) {
+        const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3];
+        if (a > b) continue;  // each edge once: a closed oriented interface uses it once each way
+        const double len = (c.points[a] - c.points[b]).norm();
+        if (len < min_length) todo.push_back({len, a, b});
+      }
+    if (todo.empty()) break;
+    std::sort(todo.begin(), todo.end());
+    long made = 0;
+    for (const auto& [len0, a, b] : todo) {
+      if (!c.on_interface[a] || !c.on_interface[b]) continue;  // an end went in this pass
+      if ((c.points[a] - c.points[b]).norm() >= min_length) continue;
+      if (collapse_interface_edge(c, adj, a, b, max_length)) ++made;
+    }
+    collapses += made;
+    if (made == 0) break;
+  }
+  return collapses;
+}
+
+}  // namespace phellem::bark

@@ -1,0 +1,34 @@
+// Coarsening of the interface (deformable simplicial complexes, after Misztal and Bærentzen;
+// Kratt et al., Woodification, sec. 3: "we can adaptively refine and coarsen the surface mesh"):
+// an interface edge shorter than the band's lower bound is collapsed — one end (the removed
+// point) merges into the other (the survivor), the tetrahedra around the edge disappear and the
+// others keep their labels. A collapse is made only when
+//  - the link condition holds in the tetrahedral complex (the result is still a simplicial
+//    complex) and on the interface (it stays a closed 2-manifold: the two ends share exactly
+//    the two neighbours across the edge),
+//  - every resulting tetrahedron is positive (exact predicate) and not much worse in quality,
+//  - no frozen or box point moves or disappears.
+// Points are never renumbered (vertex identity matters across steps): the removed point stays
+// in `points`, used by no tetrahedron, with on_interface cleared.
+#pragma once
+
+#include <limits>
+
+#include "bark/growth/tet_adjacency.h"
+
+namespace phellem::bark {
+
+// Collapses interface edges shorter than `min_length` (m), shortest first (ties by index),
+// until none is or none can be, never making an interface edge longer than `max_length`;
+// returns the number of collapses. Deterministic.
+long collapse_short_interface_edges(TetComplex& c, double min_length,
+                                    double max_length = std::numeric_limits<double>::infinity());
+long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length,
+                                    double max_length = std::numeric_limits<double>::infinity());
+
+// Collapses the interface edge a–b if the conditions above hold, the removed point merging
+// into the survivor (placed at the midpoint when both may move); true if it did.
+bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b,
+                             double max_length = std::numeric_limits<double>::infinity());
+
+}  // namespace phellem::bark

@@ -1,0 +1,249 @@
+// The repair of the deformable simplicial complex (bark/growth/complex_repair.h and its parts:
+// tet_adjacency.h, interface_coarsening.h, tet_flips.h; Kratt et al., Woodification, sec. 3):
+// collapses keep the interface a closed oriented manifold, flips never touch the interface,
+// and a sphere grown 1.6× with splits, collapses and flips every step stays a sphere of the
+// right radius with no inverted tetrahedron, whatever the thread count.
+#include <gtest/gtest.h>
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "bark/geometry/procedural_meshes.h"
+#include "bark/growth/complex_repair.h"
+#include "bark/growth/interface_coarsening.h"
+#include "bark/growth/interface_motion.h"
+#include "bark/growth/interface_refinement.h"
+#include "bark/growth/tet_flips.h"
+
+using namespace phellem;
+using namespace phellem::bark;
+
+namespace {
+
+GrowthFunction growth_of(double thickness) {
+  GrowthFunction g;
+  g.weibull_c = 1;
+  g.thickness = float(thickness);
+  return g;
+}
+
+// Every directed interface edge is used once and its reverse once: a closed, consistently
+// oriented 2-manifold (checked on the map-free scan and on TetComplex's own).
+bool closed_manifold(const std::vector<std::array<uint32_t, 3>>& faces) {
+  std::vector<std::array<uint32_t, 2>> directed;
+  for (const auto& f : faces)
+    for (int e = 0; e < 3; ++e) directed.push_back({f[size_t(e)], f[size_t(e + 1) % 3]});
+  std::sort(directed.begin(), directed.end());
+  if (std::adjacent_find(directed.begin(), directed.end()) != directed.end()) return false;
+  for (const auto& e : directed)
+    if (!std::binary_search(directed.begin(), directed.end(), std::array<uint32_t, 2>{e[1], e[0]})) return false;
+  return true;
+}
+
+std::vector<std::array<uint32_t, 3>> sorted(std::vector<std::array<uint32_t, 3>> f) {
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+std::pair<double, double> edge_range(const TetComplex& c) {
+  double lo = 1e300, hi = 0;
+  for (const auto& e : interface_edges(c)) {
+    const double l = (c.points[e[0]] - c.points[e[1]]).norm();
+    lo = std::min(lo, l);
+    hi = std::max(hi, l);
+  }
+  return {lo, hi};
+}
+
+// The labels are those the interface says: every point the interface uses is flagged, no
+// other point is, and no point without tetrahedra is.
+void expect_consistent_flags(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces) {
+  std::vector<uint8_t> used(c.points.size(), 0), on(c.points.size(), 0);
+  for (const auto& t : c.tets)
+    for (uint32_t v : t) used[v] = 1;
+  for (const auto& f : faces)
+    for (uint32_t v : f) on[v] = 1;
+  for (size_t i = 0; i < c.points.size(); ++i) {
+    ASSERT_EQ(c.on_interface[i], on[i]) << "point " << i;
+    if (!used[i]) {
+      ASSERT_EQ(c.on_interface[i], 0) << "point " << i;
+    }
+  }
+  for (uint8_t l : c.label) ASSERT_TRUE(l == TetComplex::kInside || l == TetComplex::kOutside);
+}
+
+struct GrowthRun {
+  double lag = 0;          // the worst |r − (R₀ + thickening)| of an interface vertex at the end
+  double volume_ratio = 0;  // the inside volume over the sphere's
+  double band_max = 0;
+  long shortened = 0, clamped = 0;
+  long short_edges = 0;  // the most interface edges below the band's lower bound after a step
+};
+
+// A 0.5 m icosphere(3) grown to 0.8 m over 20 steps; `repair`: the DSC step (collapses and
+// flips too), else only the splits (as before the repair existed).
+GrowthRun grow_sphere(bool repair, bool check_every_step) {
+  const double r0 = 0.5;
+  TetComplex c = tetrahedralize_surface(icosphere(3, r0), TetSettings{}, "s.json", "/objects/0");
+  GrowthRun run;
+  run.band_max = edge_range(c).second;
+  const double band_min = 0.4 * run.band_max;
+  const GrowthFunction g = growth_of(1.0);
+  const double t_end = -std::log(0.7);  // thickening 1 − exp(−t) = 0.3 m
+  const int steps = 20;
+  for (int k = 0; k < steps; ++k) {
+    const InterfaceStepStats st = advance_interface(c, g, t_end * k / steps, t_end * (k + 1) / steps);
+    run.shortened += st.shortened;
+    run.clamped += st.clamped;
+    if (repair) {
+      const RepairStats rs = growth_repair_step(c, band_min, run.band_max);
+      if (check_every_step)
+        std::printf("step %d: %ld moved, %ld shortened, %ld clamped, %ld flips; repair %ld splits, %ld collapses, %ld+%ld flips, %ld relocated, %ld free splits\n",
+                    k, st.moved, st.shortened, st.clamped, st.flips, rs.splits, rs.collapses, rs.flips23, rs.flips32, rs.relocated, rs.free_splits);
+    }
+    else
+      split_long_interface_edges(c, run.band_max);
+    if (!check_every_step) continue;
+    EXPECT_EQ(c.first_inverted(), -1) << "step " << k;
+    const auto faces = c.interface_faces();
+    EXPECT_TRUE(closed_manifold(faces)) << "step " << k;
+    EXPECT_EQ(sorted(interface_faces(c, TetAdjacency(c))), faces) << "step " << k;
+    expect_consistent_flags(c, faces);
+    // Every edge below the band's upper bound; below its lower bound only the few whose
+    // collapse the link condition or the positivity refuses (not yet flipped away: at most 1%).
+    long edges = 0, short_edges = 0;
+    for (const auto& e : interface_edges(c)) {
+      const double l = (c.points[e[0]] - c.points[e[1]]).norm();
+      ++edges;
+      short_edges += l < band_min;
+      EXPECT_LE(l, run.band_max) << "step " << k;
+    }
+    EXPECT_LE(short_edges, edges / 100) << "step " << k;
+    run.short_edges = std::max(run.short_edges, short_edges);
+  }
+  const double r = r0 + g.cumulative(t_end);
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i]) run.lag = std::max(run.lag, std::abs(c.points[i].norm() - r));
+  run.volume_ratio = c.volume(TetComplex::kInside) / (4.0 / 3.0 * M_PI * r * r * r);
+  return run;
+}
+
+}  // namespace
+
+TEST(TetAdjacency, InterfaceFacesMatchTheMapBasedScan) {
+  const TetComplex c = tetrahedralize_surface(icosphere(2, 0.5), TetSettings{}, "s.json", "/objects/0");
+  const TetAdjacency adj(c);
+  EXPECT_EQ(sorted(interface_faces(c, adj)), c.interface_faces());
+  for (uint32_t p = 0; p < c.points.size(); ++p)
+    for (uint32_t t : adj.around(p)) EXPECT_NE(std::find(c.tets[t].begin(), c.tets[t].end(), p), c.tets[t].end());
+}
+
+TEST(InterfaceCoarsening, ShortEdgesCollapseKeepingAClosedManifoldAndPositiveTetrahedra) {
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+  const auto [lo, hi] = edge_range(c);
+  const double v0 = c.volume(TetComplex::kInside);
+  const double min_length = 0.5 * (lo + hi);  // about half the edges are "short"
+  long short_before = 0;
+  for (const auto& e : interface_edges(c)) short_before += (c.points[e[0]] - c.points[e[1]]).norm() < min_length;
+  const auto box_before = [&] {
+    std::vector<Eigen::Vector3d> b;
+    for (size_t i = 0; i < c.points.size(); ++i)
+      if (c.on_box[i]) b.push_back(c.points[i]);
+    return b;
+  }();
+  const size_t faces_before = c.interface_faces().size();
+  const long collapses = collapse_short_interface_edges(c, min_length);
+  EXPECT_GT(collapses, 50);
+  EXPECT_EQ(c.first_inverted(), -1);
+  const auto faces = c.interface_faces();
+  EXPECT_TRUE(closed_manifold(faces));
+  EXPECT_EQ(faces.size(), faces_before - 2 * size_t(collapses));  // each collapse removes two faces
+  expect_consistent_flags(c, faces);
+  long short_after = 0;
+  for (const auto& e : interface_edges(c)) short_after += (c.points[e[0]] - c.points[e[1]]).norm() < min_length;
+  EXPECT_LT(short_after, short_before / 4) << short_before << " short edges before";
+  size_t k = 0;
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (c.on_box[i]) {
+      EXPECT_EQ(c.points[i], box_before[k++]);
+    }
+  // A coarser polyhedron inscribed in the same sphere: a little less volume, not much.
+  EXPECT_LT(c.volume(TetComplex::kInside), v0 * 1.0001);
+  EXPECT_GT(c.volume(TetComplex::kInside), v0 * 0.95);
+}
+
+TEST(TetFlips, QualityRepairNeverTouchesTheInterfaceNorLowersTheWorstOutsideTetrahedron) {
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+  // Squash and split the outside: grow the interface a few steps with splits but no repair.
+  const GrowthFunction g = growth_of(1.0);
+  const double band_max = edge_range(c).second;
+  for (int k = 0; k < 2; ++k) {
+    advance_interface(c, g, 0.03 * k, 0.03 * (k + 1));
+    split_long_interface_edges(c, band_max);
+  }
+  const auto faces = c.interface_faces();
+  std::vector<Eigen::Vector3d> interface_points;
+  std::vector<uint32_t> interface;
+  for (uint32_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i]) {
+      interface.push_back(i);
+      interface_points.push_back(c.points[i]);
+    }
+  auto worst_outside_near = [&] {
+    const TetAdjacency adj(c);
+    double q = 1e300;
+    for (uint32_t v : interface)
+      for (uint32_t t : adj.around(v))
+        if (c.label[t] == TetComplex::kOutside) q = std::min(q, tet_quality(c, c.tets[t]));
+    return q;
+  };
+  const double worst_before = worst_outside_near();
+  const double inside_before = c.volume(TetComplex::kInside), outside_before = c.volume(TetComplex::kOutside);
+  TetAdjacency adj(c);
+  const FlipStats fs = improve_tets_near(c, adj, interface, 0.3, 0, 3);
+  EXPECT_GT(fs.flips23 + fs.flips32, 0);
+  EXPECT_EQ(c.first_inverted(), -1);
+  EXPECT_EQ(c.interface_faces(), faces);
+  for (size_t k = 0; k < interface.size(); ++k) EXPECT_EQ(c.points[interface[k]], interface_points[k]);
+  EXPECT_GE(worst_outside_near(), worst_before);
+  EXPECT_NEAR(c.volume(TetComplex::kInside), inside_before, 1e-12);
+  EXPECT_NEAR(c.volume(TetComplex::kOutside), outside_before, 1e-9);
+  for (uint32_t p = 0; p < c.points.size(); ++p)
+    for (uint32_t t : adj.around(p)) ASSERT_NE(std::find(c.tets[t].begin(), c.tets[t].end(), p), c.tets[t].end());
+}
+
+TEST(ComplexRepair, ASphereGrown16TimesStaysOnItsRadiusWithEveryStepValid) {
+  const GrowthRun before = grow_sphere(false, false);
+  const GrowthRun after = grow_sphere(true, true);
+  std::printf("lag with splits only: %.4f m (%ld shortened, %ld clamped); with the repair: %.4f m (%ld, %ld); band max %.4f m, at most %ld short edges\n",
+              before.lag, before.shortened, before.clamped, after.lag, after.shortened, after.clamped, after.band_max, after.short_edges);
+  // Within one edge (the requirement; asserted with some room below it); measured 0.048 m =
+  // 0.59 of the band's upper bound, where the splits alone leave 0.119 m (0.155 m before the
+  // DSC repair existed). The aim, a quarter, is not reached yet: the lag gathers where the
+  // sphere nears the box's faces, whose coarse needles to the box corners no flip removes.
+  EXPECT_LT(after.lag, 0.75 * after.band_max) << after.short_edges << " short edges at most";
+  EXPECT_LT(after.lag, 0.5 * before.lag);
+  EXPECT_NEAR(after.volume_ratio, 1.0, 0.02);
+}
+
+TEST(ComplexRepair, StepsAreBitIdenticalAtOneAndTwoThreads) {
+  auto run = [](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+    const double band_max = edge_range(c).second;
+    const GrowthFunction g = growth_of(1.0);
+    for (int k = 0; k < 6; ++k) {
+      advance_interface(c, g, 0.02 * k, 0.02 * (k + 1));
+      growth_repair_step(c, 0.4 * band_max, band_max);
+    }
+    return c;
+  };
+  const TetComplex one = run(1), two = run(2);
+  EXPECT_EQ(one.points, two.points);
+  EXPECT_EQ(one.tets, two.tets);
+  EXPECT_EQ(one.label, two.label);
+  EXPECT_EQ(one.on_interface, two.on_interface);
+}
