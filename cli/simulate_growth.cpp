@@ -82,6 +82,8 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
                               {"tetrahedra_end", st.tets_end},
                               {"moves", {{"full", st.moved}, {"shortened", st.shortened}, {"clamped", st.clamped}}},
                               {"splits", st.splits},
+                              {"collapses", st.collapses},
+                              {"flips", st.flips},
                               {"frozen", {{"obstacle", st.frozen_obstacle}, {"contact", st.frozen_contact}}},
                               {"rings", run.rings.size()},
                               {"time_s", {{"setup", st.setup_s}, {"growth", st.steps_s}, {"crack", t_crack}}}};

@@ -56,8 +56,8 @@ GrowthDesc parse_growth(JsonObject o) {
   if (auto v = o.get("cracks")) d.cracks = v->boolean();
   if (auto v = o.get("edge_length")) {
     const Vec2f band = v->vec2();
-    if (!(band.x() > 0 && band.y() <= 100 && band.x() * 2 <= band.y()))
-      v->fail("edge_length must be [min, max] in metres with 0 < 2 min <= max <= 100 (a split edge's halves must not be too short)");
+    if (!(band.x() > 0 && band.y() <= 100 && band.x() * 2 < band.y()))
+      v->fail("edge_length must be [min, max] in metres with 0 < 2 min < max <= 100 (a split edge's halves must stay above min)");
     s.edge_min = band.x();
     s.edge_max = band.y();
   }

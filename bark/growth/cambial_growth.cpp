@@ -1,14 +1,15 @@
 #include "bark/growth/cambial_growth.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <set>
 
+#include "bark/growth/complex_repair.h"
 #include "bark/growth/growth_contact.h"
 #include "bark/growth/interface_curvature.h"
 #include "bark/growth/interface_motion.h"
-#include "bark/growth/interface_refinement.h"
 #include "util/errors.h"
 
 namespace phellem::bark {
@@ -40,7 +41,7 @@ TriMesh welded(const TriMesh& in) {
   return out;
 }
 
-size_t interface_vertex_count(const TetComplex& c) {
+size_t interface_vertex_count(const TetComplex& c) {  // points an operation removed have on_interface 0
   size_t n = 0;
   for (uint8_t f : c.on_interface) n += f;
   return n;
@@ -85,6 +86,8 @@ CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObs
   std::vector<GrowthObstacle> welded_obstacles;
   for (const auto& o : obstacles) welded_obstacles.push_back({welded(o.mesh), o.where});
   complex_ = tetrahedralize_surface(input, welded_obstacles, settings_.tet, file, where);
+  adjacency_.emplace(complex_);
+  obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);  // obstacle tetrahedra never change
   stats_.setup_s = since(t0);
   stats_.vertices_start = stats_.vertices_end = interface_vertex_count(complex_);
   stats_.tets_start = stats_.tets_end = complex_.tets.size();
@@ -104,7 +107,7 @@ bool CambialGrowth::step() {
   const auto t0 = Clock::now();
   // Eq. (1) over [age(k), age(k+1)]: reversed, the second age is the younger one and the
   // thickening negative (the surface moves inwards).
-  const InterfaceStepStats st = advance_interface(complex_, settings_.function, age_at(step_), age_at(step_ + 1));
+  const InterfaceStepStats st = advance_interface(complex_, *adjacency_, settings_.function, age_at(step_), age_at(step_ + 1));
   stats_.moved += st.moved;
   stats_.shortened += st.shortened;
   stats_.clamped += st.clamped;
@@ -116,16 +119,25 @@ bool CambialGrowth::step() {
   const double step_thickening = std::abs(settings_.function.cumulative(age_at(step_ + 1)) -
                                           settings_.function.cumulative(age_at(step_))) *
                                  (1 + std::abs(double(settings_.function.eccentricity)));
-  const ContactStats contact = freeze_contacts(complex_, std::max(0.5 * step_thickening, 0.02 * settings_.edge_min));
+  std::vector<std::array<uint32_t, 3>> faces = interface_faces(complex_, *adjacency_);
+  std::sort(faces.begin(), faces.end());
+  const ContactStats contact =
+      freeze_contacts(complex_, faces, obstacle_faces_, std::max(0.5 * step_thickening, 0.02 * settings_.edge_min));
   stats_.frozen_obstacle += contact.obstacle;
   stats_.frozen_contact += contact.front;
-  stats_.splits += split_long_interface_edges(complex_, settings_.edge_max);
+  const RepairStats repair = growth_repair_step(complex_, *adjacency_, settings_.edge_min, settings_.edge_max);
+  stats_.splits += repair.splits;
+  stats_.collapses += repair.collapses;
+  stats_.flips += repair.flips23 + repair.flips32;
   ++step_;
   stats_.steps_s += since(t0);
   stats_.vertices_end = interface_vertex_count(complex_);
   stats_.tets_end = complex_.tets.size();
-  if (settings_.ring_interval > 0 && (step_ % settings_.ring_interval == 0 || step_ == settings_.steps))
-    rings_.push_back(record_ring(complex_, step_));
+  if (settings_.ring_interval > 0 && (step_ % settings_.ring_interval == 0 || step_ == settings_.steps)) {
+    faces = interface_faces(complex_, *adjacency_);
+    std::sort(faces.begin(), faces.end());
+    rings_.push_back(record_ring(complex_, faces, step_));
+  }
   return true;
 }
 

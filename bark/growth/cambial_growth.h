@@ -3,7 +3,8 @@
 // obstacles as fixed regions, and each step moves it along its normals by the growth
 // function's thickening over the step (Eq. 1–3, interface_motion.h), freezes the vertices
 // that reached an obstacle or another front (sec. 4.5, growth_contact.h), then repairs the
-// volume so interface edges stay inside their length band (interface_refinement.h). Every
+// volume in the manner of deformable simplicial complexes (complex_repair.h: splits and
+// collapses keep interface edges inside their length band, flips the outside well shaped). Every
 // `ring_interval` steps the interface is recorded as a growth ring. Reversed growth (sec. 4.3)
 // runs the ages backwards: the surface shrinks by the thickening it would have grown.
 //
@@ -11,11 +12,13 @@
 // frames, crack coupling); it never runs a step by itself.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bark/geometry/tri_mesh.h"
 #include "bark/growth/growth_rings.h"
+#include "bark/growth/tet_adjacency.h"
 #include "bark/growth/tet_complex.h"
 #include "bark/growth/weibull_growth.h"
 
@@ -34,7 +37,7 @@ struct CambialGrowthSettings {
 struct CambialGrowthStats {
   size_t vertices_start = 0, vertices_end = 0;  // interface vertices
   size_t tets_start = 0, tets_end = 0;
-  long moved = 0, shortened = 0, clamped = 0, splits = 0;
+  long moved = 0, shortened = 0, clamped = 0, splits = 0, collapses = 0, flips = 0;
   long frozen_obstacle = 0, frozen_contact = 0;  // interface vertices stopped by an obstacle, by another front
   double setup_s = 0, steps_s = 0;  // TetGen; all steps
 };
@@ -74,6 +77,8 @@ class CambialGrowth {
 
   CambialGrowthSettings settings_;
   TetComplex complex_;
+  std::optional<TetAdjacency> adjacency_;  // of complex_, kept in step by every operation
+  std::vector<std::array<uint32_t, 3>> obstacle_faces_;
   std::vector<GrowthRing> rings_;
   CambialGrowthStats stats_;
   int step_ = 0;

@@ -71,10 +71,13 @@ std::vector<uint32_t> near_along_interface(const TetComplex& c, const std::vecto
 }  // namespace
 
 ContactStats freeze_contacts(TetComplex& c, double gap) {
+  return freeze_contacts(c, c.interface_faces(), c.boundary_faces(TetComplex::kObstacle), gap);
+}
+
+ContactStats freeze_contacts(TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces,
+                             const std::vector<std::array<uint32_t, 3>>& obstacle_faces, double gap) {
   ContactStats st;
   if (!(gap > 0)) return st;
-  const auto faces = c.interface_faces();
-  const auto obstacle_faces = c.boundary_faces(TetComplex::kObstacle);
   const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
 
   // The interface's edges, as neighbour lists (sorted: deterministic searches).

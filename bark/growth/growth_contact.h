@@ -30,6 +30,10 @@ struct ContactStats {
 // Decisions are taken on the complex as it is on entry and applied together: the result does
 // not depend on vertex order or thread count. Distances through a CGAL AABB tree.
 ContactStats freeze_contacts(TetComplex& c, double gap);
+// The same with the interface faces (sorted, as TetComplex::interface_faces() gives them) and
+// the obstacles' boundary faces the caller has already.
+ContactStats freeze_contacts(TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces,
+                             const std::vector<std::array<uint32_t, 3>>& obstacle_faces, double gap);
 
 inline constexpr double kNearGaps = 4.0;
 

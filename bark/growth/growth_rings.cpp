@@ -4,11 +4,13 @@
 
 namespace phellem::bark {
 
-GrowthRing record_ring(const TetComplex& c, int step) {
+GrowthRing record_ring(const TetComplex& c, int step) { return record_ring(c, c.interface_faces(), step); }
+
+GrowthRing record_ring(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces, int step) {
   GrowthRing r;
   r.step = step;
   std::map<uint32_t, uint32_t> index;
-  for (const auto& f : c.interface_faces()) {
+  for (const auto& f : faces) {
     std::array<uint32_t, 3> g{};
     for (int k = 0; k < 3; ++k) {
       const auto [it, added] = index.emplace(f[size_t(k)], uint32_t(r.points.size()));

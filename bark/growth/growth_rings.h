@@ -18,6 +18,8 @@ struct GrowthRing {
 
 // The interface as it is now (its own compact copy).
 GrowthRing record_ring(const TetComplex& c, int step);
+// The same from the interface faces the caller has already.
+GrowthRing record_ring(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces, int step);
 
 // The ring's trace in the plane through `origin` with unit normal `normal`: segments of the
 // faces the plane crosses (faces lying in the plane are skipped).

@@ -36,7 +36,7 @@ TEST(CambialGrowthCli, BadGrowthBlocksAreRefusedAtTheirJsonPath) {
       {R"({"obstacles": ["trunk"]})", "log", "", "/objects/0/growth/obstacles/0", "its own obstacle"},
       {R"({"obstacles": ["p"]})", "log", R"(, {"type": "plane", "name": "p"})", "/objects/0/growth/obstacles/0",
        "must be a mesh or sphere object"},
-      {R"({"edge_length": [0.01, 0.015]})", "log", "", "/objects/0/growth/edge_length", "2 min <= max"},
+      {R"({"edge_length": [0.01, 0.015]})", "log", "", "/objects/0/growth/edge_length", "2 min < max"},
       {R"({"tetrahedra": {"quality": 1.0}})", "log", "", "/objects/0/growth/tetrahedra/quality", "[1.1, 10]"},
       {R"({"speed": 2})", "log", "", "/objects/0/growth/speed", ""},
       {R"({"steps": 2})", "trunk", "", "/objects/0/growth", "must be closed"},
