@@ -113,7 +113,12 @@ bool CambialGrowth::step() {
   stats_.clamped += st.clamped;
   // Sec. 4.3: reversed growth is the negated speed plus a small curvature term, which keeps a
   // shrinking surface from folding where it is concave.
-  if (settings_.reverse) smooth_interface_curvature(complex_, 0.1);
+  // Forwards, the same term (weaker) lets a vertex that a blocked move left behind catch up
+  // with its neighbours instead of staying a pit.
+  if (settings_.reverse)
+    smooth_interface_curvature(complex_, 0.1);
+  else if (settings_.curvature > 0)
+    smooth_interface_curvature(complex_, settings_.curvature, true);
   // Sec. 4.5: vertices that came within half the step's thickening of an obstacle or of
   // another part of the front stop there for good (a crease wound where fronts meet).
   const double step_thickening = std::abs(settings_.function.cumulative(age_at(step_ + 1)) -

@@ -32,6 +32,7 @@ struct CambialGrowthSettings {
   int ring_interval = 10;             // steps between recorded rings (0: none)
   TetSettings tet;
   bool reverse = false;  // sec. 4.3: shrink from the surface at age_end back to age_start
+  double curvature = 0.2;  // forwards: the share of the outward normal Laplacian each step adds (pits catch up)
 };
 
 struct CambialGrowthStats {

@@ -16,7 +16,7 @@ bool positive(const TetComplex& c, const std::array<uint32_t, 4>& t) {
 
 }  // namespace
 
-long smooth_interface_curvature(TetComplex& c, double rate) {
+long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards) {
   const auto faces = c.interface_faces();
   const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
   std::vector<Eigen::Vector3d> sum(c.points.size(), Eigen::Vector3d::Zero());
@@ -33,7 +33,8 @@ long smooth_interface_curvature(TetComplex& c, double rate) {
   for (size_t v = 0; v < c.points.size(); ++v)
     if (count[v] > 0) {
       const Eigen::Vector3d lap = sum[v] / count[v] - c.points[v];
-      target[v] = c.points[v] + rate * normals[v].dot(lap) * normals[v];
+      const double along = normals[v].dot(lap);
+      target[v] = c.points[v] + (only_outwards && along < 0 ? 0.0 : rate * along) * normals[v];
     }
   long moved = 0;
   for (uint32_t v = 0; v < c.points.size(); ++v) {

@@ -10,7 +10,9 @@
 namespace phellem::bark {
 
 // `rate` in [0, 1]: the fraction of the normal component of (neighbour mean − vertex).
-// Returns the number of vertices moved. Deterministic (Jacobi: all targets from the old positions).
-long smooth_interface_curvature(TetComplex& c, double rate);
+// `only_outwards`: only vertices below their neighbours move (pits rise; a convex surface
+// does not shrink). Returns the number of vertices moved. Deterministic (Jacobi: all targets
+// from the old positions).
+long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards = false);
 
 }  // namespace phellem::bark
