@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene/json_reader.h"
+#include "scene/scene_image.h"
 
 namespace phellem {
 
@@ -25,7 +26,21 @@ bark::GrowthStroke parse_stroke(JsonObject o) {
 
 }  // namespace
 
-GrowthDesc parse_growth(JsonObject o) {
+float GrowthSpeedMap::at(double u, double v) const {
+  // Bilinear between texel centres, repeating.
+  const double x = u * width - 0.5, y = v * height - 0.5;
+  const double fx = std::floor(x), fy = std::floor(y);
+  const double tx = x - fx, ty = y - fy;
+  auto texel = [&](double i, double j) {
+    const long w = long(width), h = long(height);
+    const long a = ((long(i) % w) + w) % w, b = ((long(j) % h) + h) % h;
+    return double(values[size_t(b) * size_t(width) + size_t(a)]);
+  };
+  return float((1 - ty) * ((1 - tx) * texel(fx, fy) + tx * texel(fx + 1, fy)) +
+               ty * ((1 - tx) * texel(fx, fy + 1) + tx * texel(fx + 1, fy + 1)));
+}
+
+GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
   GrowthDesc d;
   d.where = {o.file(), o.path()};
   bark::CambialGrowthSettings& s = d.settings;
@@ -49,6 +64,23 @@ GrowthDesc parse_growth(JsonObject o) {
   }
   if (auto v = o.get("strokes"))
     for (auto& e : v->array()) f.strokes.push_back(parse_stroke(e.object()));
+  if (auto v = o.get("speed_map")) {
+    JsonObject m = v->object();
+    auto map = std::make_shared<GrowthSpeedMap>();
+    auto file = m.at("file");
+    const SceneImage img = read_scene_image(file, base_dir);
+    map->width = img.width;
+    map->height = img.height;
+    map->values.resize(size_t(img.width) * size_t(img.height));
+    for (size_t i = 0; i < map->values.size(); ++i) {
+      map->values[i] = img.pixels[i * size_t(img.channels)];
+      if (!(map->values[i] >= 0 && map->values[i] <= 1e6f))
+        file.fail("image " + img.path + " holds a value outside [0, 1e6] (a speed factor: non-negative and finite)");
+    }
+    if (auto w = m.get("scale")) map->scale = in_range(*w, 0, 1000, "scale must lie in [0, 1000] (multiplies the map's values)");
+    m.finish();
+    d.speed_map = std::move(map);
+  }
   if (auto v = o.get("obstacles")) {
     for (auto& e : v->array()) d.obstacle_names.push_back(e.string());
   }

@@ -9,6 +9,7 @@
 //     "thickness": 0.05,               // m: the total thickening S(∞) = 1 maps to
 //     "eccentricity": 0.2, "eccentricity_direction": [0, 1, 0],   // Eq. (3)
 //     "strokes": [{"point": [x, y, z], "radius": 0.05, "value": 1}],  // sec. 4.4
+//     "speed_map": {"file": "paint.png", "scale": 1},   // sec. 4.4: speed × scale × map(uv)
 //     "obstacles": ["wire"],           // names of other mesh or sphere objects
 //     "ring_interval": 10,             // steps between growth rings (0: none)
 //     "cracks": true,                  // with stress bark: crack the grown surface (false: no cracks)
@@ -18,6 +19,7 @@
 //   }
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,15 +30,27 @@ namespace phellem {
 
 class JsonObject;
 
+// A painted speed map (sec. 4.4): its first channel as stored (numbers, not colours), row 0
+// at v = 0 (glTF), repeated outside [0, 1]; the speed is multiplied by scale × the bilinear value
+// at each vertex's texture coordinates.
+struct GrowthSpeedMap {
+  int width = 0, height = 0;
+  std::vector<float> values;
+  float scale = 1;
+  float at(double u, double v) const;
+};
+
 struct GrowthDesc {
   bark::CambialGrowthSettings settings;
   std::vector<std::string> obstacle_names;
   std::vector<size_t> obstacles;  // object indices, resolved once every object is parsed
   bool cracks = true;
+  std::shared_ptr<const GrowthSpeedMap> speed_map;
   Location where;  // of the growth object itself
 };
 
-GrowthDesc parse_growth(JsonObject o);
+// `base_dir` resolves the speed map's file name.
+GrowthDesc parse_growth(JsonObject o, const std::string& base_dir);
 
 // The memory a growth holds at its end (the tetrahedral complex, adjacency and rings), from
 // the input mesh's vertex count and area and the settings; used to refuse a growth before

@@ -29,7 +29,14 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi) {
     obstacles.push_back({obstacle_mesh(desc.objects.at(g.obstacles[k])), g.where.path + "/obstacles/" + std::to_string(k)});
   // Meshes that cannot grow (open, overlapping) are reported at the growth block and at the
   // obstacle's entry in it.
-  return bark::CambialGrowth(object_trimesh(obj), obstacles, g.settings, desc.file, g.where.path);
+  const bark::TriMesh surface = object_trimesh(obj);
+  std::vector<float> speed;
+  if (g.speed_map) {
+    if (!surface.has_uvs())
+      throw UserError(desc.file, g.where.path + "/speed_map", "a speed map needs a mesh with texture coordinates");
+    for (const auto& uv : surface.uvs) speed.push_back(g.speed_map->scale * g.speed_map->at(uv.x(), uv.y()));
+  }
+  return bark::CambialGrowth(surface, obstacles, g.settings, desc.file, g.where.path, speed);
 }
 
 std::shared_ptr<const bark::TriMesh> grown_surface(const bark::CambialGrowth& g) {

@@ -459,7 +459,7 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
         bo.fail("model", "the strip model needs a tree object (generalized cylinders); on meshes use \"stress\"");
       d.stress_bark = std::make_shared<StressBarkDesc>(parse_stress_bark(b->object(), c.base_dir.string(), scene.render.seed));
     }
-    if (auto g = o.get("growth")) d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object()));
+    if (auto g = o.get("growth")) d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object(), c.base_dir.string()));
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
     d.tree = parse_tree(c, o, scene.render.seed, &d.stress_bark);

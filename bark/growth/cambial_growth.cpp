@@ -22,15 +22,17 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // The surface as one closed index mesh: vertices at the same position (split at UV seams)
 // welded into the first of them, which keeps its UV; vertices no triangle uses dropped (TetGen
 // would see them as loose points on top of the used ones).
-TriMesh welded(const TriMesh& in) {
+TriMesh welded(const TriMesh& in, std::vector<int64_t>* first_of = nullptr) {
   std::map<std::array<double, 3>, uint32_t> at;
   TriMesh out;
+  if (first_of) first_of->clear();
   for (const auto& t : in.triangles) {
     std::array<uint32_t, 3> g{};
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d& p = in.positions[t[size_t(k)]];
       const auto [it, added] = at.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, uint32_t(out.positions.size()));
       if (added) {
+        if (first_of) first_of->push_back(int64_t(t[size_t(k)]));
         out.positions.push_back(p);
         if (in.has_uvs()) out.uvs.push_back(in.uvs[t[size_t(k)]]);
       }
@@ -76,9 +78,12 @@ GrowthSurface extract_interface(const TetComplex& c) {
 }
 
 CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
-                             const std::string& file, const std::string& where)
+                             const std::string& file, const std::string& where, const std::vector<float>& vertex_speed)
     : settings_(s) {
-  const TriMesh input = welded(surface);
+  if (!vertex_speed.empty() && vertex_speed.size() != surface.positions.size())
+    throw std::invalid_argument("CambialGrowth: one speed per surface vertex");
+  std::vector<int64_t> first_of;  // welded vertex -> the input vertex it was made from
+  const TriMesh input = welded(surface, &first_of);
   const double mean = mean_edge_length(input);
   if (settings_.edge_max <= 0) settings_.edge_max = 1.5 * mean;
   if (settings_.edge_min <= 0) settings_.edge_min = 0.4 * settings_.edge_max;
@@ -86,6 +91,11 @@ CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObs
   std::vector<GrowthObstacle> welded_obstacles;
   for (const auto& o : obstacles) welded_obstacles.push_back({welded(o.mesh), o.where});
   complex_ = tetrahedralize_surface(input, welded_obstacles, settings_.tet, file, where);
+  if (!vertex_speed.empty()) {
+    // TetGen keeps the input points first and in order; its own points (off the interface) get 1.
+    complex_.speed.assign(complex_.points.size(), 1.0f);
+    for (size_t i = 0; i < first_of.size(); ++i) complex_.speed[i] = vertex_speed[size_t(first_of[i])];
+  }
   adjacency_.emplace(complex_);
   obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);  // obstacle tetrahedra never change
   stats_.setup_s = since(t0);

@@ -57,9 +57,11 @@ double mean_edge_length(const TriMesh& m);
 class CambialGrowth {
  public:
   // `surface`: closed and consistently oriented (UserError at file/where otherwise);
-  // `obstacles`: closed meshes that do not grow, apart from the surface and each other.
+  // `obstacles`: closed meshes that do not grow, apart from the surface and each other;
+  // `vertex_speed`: empty, or a factor per surface vertex (sec. 4.4's painted map), carried by
+  // the interface's points (interpolated where edges split).
   CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
-                const std::string& file, const std::string& where);
+                const std::string& file, const std::string& where, const std::vector<float>& vertex_speed = {});
 
   // One step; false when every step has run.
   bool step();

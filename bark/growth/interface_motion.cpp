@@ -82,7 +82,9 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const Gro
   std::vector<uint8_t> active(movers.size(), 0);
   tbb::parallel_for(size_t(0), movers.size(), [&](size_t i) {
     const uint32_t v = movers[i];
-    const double d = growth.thickening(t0, t1, c.points[v].cast<float>(), normals[v].cast<float>());
+    // Sec. 4.4: a painted speed map scales the growth where it is painted.
+    const double d = growth.thickening(t0, t1, c.points[v].cast<float>(), normals[v].cast<float>()) *
+                     (c.speed.empty() ? 1.0 : double(c.speed[v]));
     target[i] = c.points[v] + d * normals[v];
     active[i] = d != 0 && std::isfinite(d);
   });

@@ -144,6 +144,7 @@ uint32_t TetComplex::add_point_between(uint32_t a, uint32_t b, double s) {
   on_box.push_back(on_box[a] && on_box[b]);
   frozen.push_back(frozen[a] && frozen[b]);
   if (!uv.empty()) uv.push_back((1 - s) * uv[a] + s * uv[b]);
+  if (!speed.empty()) speed.push_back(float((1 - s) * double(speed[a]) + s * double(speed[b])));
   source_vertex.push_back(-1);
   return m;
 }

@@ -43,6 +43,8 @@ struct TetComplex {
   // the refinement added): vertex identity across steps (thesis sec. 5).
   std::vector<Eigen::Vector2d> uv;
   std::vector<int32_t> source_vertex;
+  // Per point: the user's speed factor (sec. 4.4, a painted map; empty: 1 everywhere).
+  std::vector<float> speed;
 
   static constexpr uint8_t kOutside = 0, kInside = 1, kObstacle = 2;
 

@@ -39,6 +39,8 @@ TEST(CambialGrowthCli, BadGrowthBlocksAreRefusedAtTheirJsonPath) {
       {R"({"edge_length": [0.01, 0.015]})", "log", "", "/objects/0/growth/edge_length", "2 min < max"},
       {R"({"tetrahedra": {"quality": 1.0}})", "log", "", "/objects/0/growth/tetrahedra/quality", "[1.1, 10]"},
       {R"({"speed": 2})", "log", "", "/objects/0/growth/speed", ""},
+      {R"({"speed_map": {"file": "nope.png"}})", "log", "", "/objects/0/growth/speed_map/file", "nope.png"},
+      {R"({"speed_map": {"file": "nope.png", "scale": -1}})", "log", "", "/objects/0/growth/speed_map/file", ""},
       {R"({"steps": 2})", "trunk", "", "/objects/0/growth", "must be closed"},
       {R"({"steps": 2, "obstacles": ["s"]})", "log", R"(, {"type": "sphere", "name": "s", "center": [0.1, 0.15, 0], "radius": 0.05})",
        "/objects/0/growth/obstacles/0", "intersects"},

@@ -117,3 +117,30 @@ TEST(CambialGrowth, ReversedGrowthShrinksByTheThickeningItWouldHaveGrown) {
       EXPECT_NEAR(c.points[i].norm(), expected, 0.004) << "point " << i;
     }
 }
+
+TEST(CambialGrowth, APaintedSpeedMapGrowsOnlyWhereItIsPainted) {
+  // Sec. 4.4: speed 1 on the +x half of a sphere, 0 on the −x half.
+  const double r0 = 0.5, thickness = 0.06;
+  const TriMesh sphere = icosphere(3, r0);
+  std::vector<float> speed;
+  for (const auto& p : sphere.positions) speed.push_back(p.x() > 0 ? 1.0f : 0.0f);
+  CambialGrowth g(sphere, {}, uniform_growth(thickness, 6), "s.json", "/objects/0/growth", speed);
+  while (g.step()) {
+  }
+  const double grown = thickness * (1 - std::exp(-1.0));
+  const TetComplex& c = g.complex();
+  int painted = 0, bare = 0;
+  for (size_t i = 0; i < c.points.size(); ++i) {
+    if (!c.on_interface[i]) continue;
+    const Eigen::Vector3d& p = c.points[i];
+    if (p.x() > 0.2) {  // well inside the painted half
+      EXPECT_NEAR(p.norm(), r0 + grown, 0.01) << "point " << i;
+      ++painted;
+    } else if (p.x() < -0.2) {
+      EXPECT_NEAR(p.norm(), r0, 1e-9) << "point " << i;
+      ++bare;
+    }
+  }
+  EXPECT_GT(painted, 50);
+  EXPECT_GT(bare, 50);
+}
