@@ -263,8 +263,14 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
         break;
       case ObjectType::Tree:
       case ObjectType::Mesh: {
-        if (o.stress_bark) {
+        if (o.stress_bark && bark_of(oi).cracked) {
           made.push_back(stress_preview_object(*bark_of(oi).cracked, crack_surface(o, *bark_of(oi).cracked)));
+          break;
+        }
+        if (o.growth) {  // the surface at the last step of its cambial growth (world space)
+          MeshData w = to_mesh_data(*bark_of(oi).grown);
+          compute_vertex_normals(w);
+          made.push_back(from_mesh(w));
           break;
         }
         if (o.type == ObjectType::Tree) {
