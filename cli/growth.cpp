@@ -40,7 +40,7 @@ int run_growth(const cli::Options& o) {
   // Cambial growth of meshes (Kratt et al.): each frame shows the surface at its step.
   std::vector<std::pair<size_t, bark::CambialGrowth>> growths;
   for (size_t oi = 0; oi < l.desc.objects.size(); ++oi)
-    if (l.desc.objects[oi].growth) growths.emplace_back(oi, start_growth(l.desc, oi));
+    if (l.desc.objects[oi].growth) growths.emplace_back(oi, start_growth(l.desc, oi, !o.quiet));
   if (sims.empty() && growths.empty())
     throw UserError(o.scene, "/objects",
                     "nothing grows: no tree object has a \"bark\": {\"model\": \"strips\"} and no mesh a \"growth\"");

@@ -13,11 +13,12 @@ namespace {
 
 MemoryRequest request(const cli::Options& o, const SceneDesc& desc, int width, int height) {
   MemoryRequest r;
-  if (o.command == "simulate") {
+  if (o.command == "simulate" || o.command == "slice") {
+    // slice grows one object as simulate does (its --res is the section image's size).
     r.command = MemoryCommand::Simulate;
-    r.field_width = o.width.value_or(0);
-    r.field_height = o.height.value_or(0);
-    r.meshes = !o.no_mesh;
+    r.field_width = o.command == "slice" ? 0 : o.width.value_or(0);
+    r.field_height = o.command == "slice" ? 0 : o.height.value_or(0);
+    r.meshes = !o.no_mesh && o.command == "simulate";
     return r;
   }
   r.command = o.command == "growth" ? MemoryCommand::Growth : MemoryCommand::Render;

@@ -92,7 +92,7 @@ std::string usage() {
          "  phellem slice SCENE.json -o SECTION.png [--object NAME] [--plane x|y|z=VALUE] [--res WxH] [--quiet]\n"
          "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--max-level N]\n"
          "                 [--edge-px P] [--frames N] [--quiet]\n"
-         "  render, turntable, growth and simulate also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
+         "  render, turntable, growth, simulate and slice also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
          "  physical memory) and [--memory-estimate] (print the memory each stage needs, and stop).\n"
          "  phellem --help | --version\n"
          "Ranges: --spp N in [1, 1048576] (render.spp), --seed S in [0, 18446744073709551615]\n"
@@ -224,9 +224,8 @@ Options parse(const std::vector<std::string>& args) {
     if (o.scene.empty()) bad("slice", "a scene file is required");
     if (o.exr.empty()) bad("-o", "required for slice: the section image (.png)");
     need_extension("-o", o.exr, ".png");
-    if (o.spp || !o.stats.empty() || !o.view.empty() || o.memory_estimate || !o.memory_limit.empty())
-      bad(o.spp ? "--spp" : !o.stats.empty() ? "--stats" : !o.view.empty() ? "--view" : o.memory_estimate ? "--memory-estimate" : "--memory-limit",
-          "not an option of slice");
+    if (o.spp || !o.stats.empty() || !o.view.empty())
+      bad(o.spp ? "--spp" : !o.stats.empty() ? "--stats" : "--view", "not an option of slice");
   }
   if (o.command == "render") {
     if (!o.exr.empty()) need_extension("-o", o.exr, ".exr");

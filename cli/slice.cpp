@@ -40,6 +40,7 @@ int run_slice(const cli::Options& o) {
   expect_outputs(o, out);
   const SceneDesc desc = load_scene_file(o.scene);
   const size_t oi = growth_object(o, desc);
+  check_scene_memory(o, desc, 0, 0);
   const GrowthRun run = run_growth_object(desc, oi, !o.quiet);
   bark::SectionPlane plane;
   if (o.plane_axis >= 0) {

@@ -20,7 +20,7 @@ bark::TriMesh obstacle_mesh(const ObjectDesc& o) {
 
 }  // namespace
 
-bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi) {
+bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress) {
   const ObjectDesc& obj = desc.objects.at(oi);
   if (!obj.growth) throw std::logic_error("start_growth: the object does not grow");
   const GrowthDesc& g = *obj.growth;
@@ -36,7 +36,12 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi) {
       throw UserError(desc.file, g.where.path + "/speed_map", "a speed map needs a mesh with texture coordinates");
     for (const auto& uv : surface.uvs) speed.push_back(g.speed_map->scale * g.speed_map->at(uv.x(), uv.y()));
   }
-  return bark::CambialGrowth(surface, obstacles, g.settings, desc.file, g.where.path, speed);
+  const std::string name = obj.name.empty() ? "mesh" + std::to_string(oi) : obj.name;
+  Progress bar("tetrahedralize " + name, 1, progress);
+  bark::CambialGrowth growth(surface, obstacles, g.settings, desc.file, g.where.path, speed);
+  bar.advance();
+  bar.finish();
+  return growth;
 }
 
 std::shared_ptr<const bark::TriMesh> grown_surface(const bark::CambialGrowth& g) {
@@ -47,7 +52,7 @@ GrowthRun run_growth_object(const SceneDesc& desc, size_t oi, bool progress,
                             const std::function<void(const bark::CambialGrowth&)>& on_step) {
   const ObjectDesc& obj = desc.objects.at(oi);
   const std::string name = obj.name.empty() ? "mesh" + std::to_string(oi) : obj.name;
-  bark::CambialGrowth growth = start_growth(desc, oi);
+  bark::CambialGrowth growth = start_growth(desc, oi, progress);
   {
     Progress bar("grow " + name, growth.steps_total(), progress);
     while (growth.step()) {

@@ -20,8 +20,9 @@ struct GrowthRun {
   int steps = 0;
 };
 
-// The growth's surface and obstacles, ready for CambialGrowth (errors name the scene or mesh).
-bark::CambialGrowth start_growth(const SceneDesc& desc, size_t object_index);
+// The growth's surface and obstacles, tetrahedralized (TetGen) and ready to step; a progress
+// line while TetGen runs when asked (errors name the scene).
+bark::CambialGrowth start_growth(const SceneDesc& desc, size_t object_index, bool progress = false);
 
 // All steps; `on_step(growth)` after each (time-lapse frames), when given.
 GrowthRun run_growth_object(const SceneDesc& desc, size_t object_index, bool progress,

@@ -65,6 +65,19 @@ std::vector<float> read_rgb(const std::string& path, int& width) {
   return px;
 }
 
+TEST(CambialGrowthCli, AGrowthTooLargeForTheMemoryIsRefusedBeforeTetGenRuns) {
+  // 100 m of thickening on a 0.1 m log at its own edge length: about 10^6 times its area.
+  const std::string dir = test::temp_dir("cambial_growth_memory");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, log_scene(R"({"thickness": 100, "steps": 10})"));
+  for (const std::string command : {"simulate " + scene + " -o " + dir + "/out", "slice " + scene + " -o " + dir + "/s.png"}) {
+    const auto r = test::run_phellem_limited(command + " --quiet", 8192, 60);
+    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.output;
+    EXPECT_EQ(r.output.rfind("phellem: error: " + scene + ": /objects/0/growth/edge_length: needs about ", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find("raise the growth's edge_length band"), std::string::npos) << r.output;
+  }
+}
+
 nlohmann::json read_json(const std::string& path) {
   std::ifstream f(path);
   return nlohmann::json::parse(f);
