@@ -159,7 +159,9 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
 bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Probe& probe, FlipStats& stats) {
   if (!free_vertex(c, adj, v) || v == probe.v) return false;
   const std::vector<uint32_t> tets(adj.around(v).begin(), adj.around(v).end());
-  auto worst_at = [&](const Eigen::Vector3d& x, uint32_t* worst_tet) {
+  // The worst quality of v's tetrahedra with v at x; stops (returning a quality ≤ floor) as
+  // soon as one is at or below `floor`, which is all a candidate that must beat it needs.
+  auto worst_at = [&](const Eigen::Vector3d& x, uint32_t* worst_tet, double floor) {
     Probe p = probe;
     const Eigen::Vector3d keep = c.points[v];
     c.points[v] = x;
@@ -169,6 +171,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
       if (qt < q) {
         q = qt;
         if (worst_tet) *worst_tet = t;
+        if (q <= floor) break;
       }
     }
     c.points[v] = keep;
@@ -176,7 +179,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
   };
   const Eigen::Vector3d start = c.points[v];
   uint32_t worst = tets.front();
-  const double before = worst_at(start, &worst);
+  const double before = worst_at(start, &worst, -1e300);
   // Candidates: the mean of the neighbours (Laplacian smoothing) and pushes of v away from the
   // plane of its worst tetrahedron's opposite face (the direction that inflates it).
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -207,7 +210,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
   double best = before;
   Eigen::Vector3d best_x = start;
   for (const auto& x : candidates) {
-    const double q = worst_at(x, nullptr);
+    const double q = worst_at(x, nullptr, best + kGain);
     if (q > best + kGain) {
       c.points[v] = x;
       bool ok = true;
