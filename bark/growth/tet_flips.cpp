@@ -161,17 +161,34 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
   const std::vector<uint32_t> tets(adj.around(v).begin(), adj.around(v).end());
   // The worst quality of v's tetrahedra with v at x; stops (returning a quality ≤ floor) as
   // soon as one is at or below `floor`, which is all a candidate that must beat it needs.
+  // The tetrahedron that stopped the last candidate is tried first (a free vertex of the coarse
+  // outside has a hundred tetrahedra, and the same one usually stops every candidate).
+  size_t first = 0;
   auto worst_at = [&](const Eigen::Vector3d& x, uint32_t* worst_tet, double floor) {
     Probe p = probe;
     const Eigen::Vector3d keep = c.points[v];
     c.points[v] = x;
+    if (!worst_tet) {
+      const double q0 = probe_quality(c, c.tets[tets[first]], p);
+      if (q0 <= floor) {
+        c.points[v] = keep;
+        return q0;
+      }
+    }
     double q = 1e300;
-    for (uint32_t t : tets) {
+    for (size_t i = 0; i < tets.size(); ++i) {
+      const uint32_t t = tets[i];
       const double qt = probe_quality(c, c.tets[t], p);
       if (qt < q) {
         q = qt;
-        if (worst_tet) *worst_tet = t;
-        if (q <= floor) break;
+        if (worst_tet) {
+          *worst_tet = t;
+          first = i;
+        }
+        if (q <= floor) {
+          first = i;
+          break;
+        }
       }
     }
     c.points[v] = keep;
@@ -248,10 +265,32 @@ uint32_t split_free_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
 
 namespace {
 
+// The relocations that failed since the complex last changed, within one unblock_vertex (one
+// probe): every change there is counted in its FlipStats, so an unchanged count means the same
+// complex, and retrying such a relocation would fail again.
+class FailedRelocations {
+ public:
+  bool known(uint32_t v, const FlipStats& s) const {
+    return changes(s) == at_ && std::find(failed_.begin(), failed_.end(), v) != failed_.end();
+  }
+  void add(uint32_t v, const FlipStats& s) {
+    if (changes(s) != at_) {
+      failed_.clear();
+      at_ = changes(s);
+    }
+    failed_.push_back(v);
+  }
+
+ private:
+  static long changes(const FlipStats& s) { return s.flips23 + s.flips32 + s.relocated + s.splits + s.edge_removals; }
+  std::vector<uint32_t> failed_;
+  long at_ = -1;
+};
+
 // Flips and relocations that improve tetrahedron t (its faces, its edges, its free vertices);
 // with max_length > 0, a split of its longest edge not between interface points if longer.
 bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& probe, FlipStats& stats, int skip_corner,
-                 double max_length, bool relocate, int max_ring) {
+                 double max_length, bool relocate, int max_ring, FailedRelocations* failed = nullptr) {
   const std::array<uint32_t, 4> T = c.tets[t];
   // 3-2 flips of its edges (opposite skip_corner first when blocked).
   static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
@@ -286,8 +325,15 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   }
   if (!relocate) return false;
   bool moved = false;
-  for (int i = 0; i < 4; ++i)
-    if (i != skip_corner) moved = relocate_free_vertex(c, adj, T[size_t(i)], probe, stats) || moved;
+  for (int i = 0; i < 4; ++i) {
+    if (i == skip_corner) continue;
+    const uint32_t w = T[size_t(i)];
+    if (failed && failed->known(w, stats)) continue;
+    if (relocate_free_vertex(c, adj, w, probe, stats))
+      moved = true;
+    else if (failed)
+      failed->add(w, stats);
+  }
   return moved;
 }
 
@@ -306,6 +352,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
   const Probe probe{v, target};
   constexpr double kBlocking = 0.02;
   bool changed = false;
+  FailedRelocations failed;
   for (int round = 0; round < 4; ++round) {
     std::vector<std::pair<double, std::array<uint32_t, 4>>> blocking;
     for (uint32_t t : adj.around(v)) {
@@ -319,7 +366,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
       const long t = find_tet(c, adj, corners);
       if (t < 0) continue;
       const int i = int(std::find(corners.begin(), corners.end(), v) - corners.begin());
-      any = improve_tet(c, adj, uint32_t(t), probe, stats, i, 0, true, 6) || any;
+      any = improve_tet(c, adj, uint32_t(t), probe, stats, i, 0, true, 6, &failed) || any;
     }
     changed = changed || any;
     if (!any) break;
