@@ -265,47 +265,56 @@ uint32_t split_free_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
 
 namespace {
 
-// The relocations that failed since the complex last changed, within one unblock_vertex (one
-// probe): every change there is counted in its FlipStats, so an unchanged count means the same
-// complex, and retrying such a relocation would fail again.
-class FailedRelocations {
+// The operations (relocations, edge removals, 2-3 flips) that failed since the complex last
+// changed, within one unblock_vertex (one probe): every change there is counted in its
+// FlipStats, so an unchanged count means the same complex, and retrying such an operation
+// would fail again (the tetrahedra around v share edges and free corners, so each is tried
+// from several of them).
+class FailedOps {
  public:
-  bool known(uint32_t v, const FlipStats& s) const {
-    return changes(s) == at_ && std::find(failed_.begin(), failed_.end(), v) != failed_.end();
-  }
-  void add(uint32_t v, const FlipStats& s) {
+  using Key = std::array<uint32_t, 3>;  // {kind, and what it is on}
+  // op() unless it is known to fail; remembers a failure.
+  template <class Op>
+  bool attempt(const Key& key, const FlipStats& s, Op&& op) {
     if (changes(s) != at_) {
       failed_.clear();
       at_ = changes(s);
     }
-    failed_.push_back(v);
+    if (std::find(failed_.begin(), failed_.end(), key) != failed_.end()) return false;
+    if (op()) return true;
+    failed_.push_back(key);
+    return false;
   }
 
  private:
   static long changes(const FlipStats& s) { return s.flips23 + s.flips32 + s.relocated + s.splits + s.edge_removals; }
-  std::vector<uint32_t> failed_;
+  std::vector<Key> failed_;
   long at_ = -1;
 };
 
 // Flips and relocations that improve tetrahedron t (its faces, its edges, its free vertices);
 // with max_length > 0, a split of its longest edge not between interface points if longer.
 bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& probe, FlipStats& stats, int skip_corner,
-                 double max_length, bool relocate, int max_ring, FailedRelocations* failed = nullptr) {
+                 double max_length, bool relocate, int max_ring, FailedOps* failed = nullptr) {
   const std::array<uint32_t, 4> T = c.tets[t];
+  auto attempt = [&](const FailedOps::Key& key, auto&& op) { return failed ? failed->attempt(key, stats, op) : op(); };
+  auto edge_removal = [&](uint32_t a, uint32_t b) {
+    return attempt({0, a, b}, [&] { return remove_edge(c, adj, a, b, probe, stats, max_ring); });
+  };
   // 3-2 flips of its edges (opposite skip_corner first when blocked).
   static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   for (const auto& e : kEdge) {
     if (e[0] == skip_corner || e[1] == skip_corner) continue;
-    if (remove_edge(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats, max_ring)) return true;
+    if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
   }
   for (int f = 0; f < 4; ++f) {
     if (skip_corner >= 0 && f != skip_corner) continue;
-    if (flip_23(c, adj, t, f, probe, stats)) return true;
+    if (attempt({1, t, uint32_t(f)}, [&] { return flip_23(c, adj, t, f, probe, stats); })) return true;
   }
   if (skip_corner >= 0)
     for (const auto& e : kEdge)
       if (e[0] == skip_corner || e[1] == skip_corner)
-        if (remove_edge(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats, max_ring)) return true;
+        if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
   if (max_length > 0) {
     double longest = max_length;
     int best = -1;
@@ -328,11 +337,7 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   for (int i = 0; i < 4; ++i) {
     if (i == skip_corner) continue;
     const uint32_t w = T[size_t(i)];
-    if (failed && failed->known(w, stats)) continue;
-    if (relocate_free_vertex(c, adj, w, probe, stats))
-      moved = true;
-    else if (failed)
-      failed->add(w, stats);
+    moved = attempt({2, w, 0}, [&] { return relocate_free_vertex(c, adj, w, probe, stats); }) || moved;
   }
   return moved;
 }
@@ -352,7 +357,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
   const Probe probe{v, target};
   constexpr double kBlocking = 0.02;
   bool changed = false;
-  FailedRelocations failed;
+  FailedOps failed;
   for (int round = 0; round < 4; ++round) {
     std::vector<std::pair<double, std::array<uint32_t, 4>>> blocking;
     for (uint32_t t : adj.around(v)) {
