@@ -68,23 +68,27 @@ bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Pro
 
 bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
                  int max_ring) {
-  std::vector<uint32_t> around_ab;
+  // Scratch buffers kept per thread: a step tries this hundreds of thousands of times.
+  thread_local std::vector<uint32_t> around_ab, ring, ring_tet, distinct, slots;
+  thread_local std::vector<std::array<uint32_t, 2>> links;
+  thread_local std::vector<uint8_t> used;
+  thread_local std::vector<std::array<uint32_t, 4>> best_made, made;
   adj.edge_tets(c, a, b, around_ab);
   const size_t n = around_ab.size();
   if (n < 3 || n > size_t(max_ring)) return false;
   for (uint32_t t : around_ab)
     if (c.label[t] != TetComplex::kOutside) return false;
   // The ring of the edge, in order: each tetrahedron a–b–x–y links x to y; they must close.
-  std::vector<std::array<uint32_t, 2>> links(n);
+  links.resize(n);
   for (size_t i = 0; i < n; ++i) {
     int k = 0;
     for (uint32_t w : c.tets[around_ab[i]])
       if (w != a && w != b) links[i][size_t(k++)] = w;
     if (k != 2) return false;
   }
-  std::vector<uint32_t> ring{links[0][0], links[0][1]};
-  std::vector<uint32_t> ring_tet{around_ab[0]};  // ring_tet[i] holds ring[i]–ring[i+1]
-  std::vector<uint8_t> used(n, 0);
+  ring.assign({links[0][0], links[0][1]});
+  ring_tet.assign({around_ab[0]});  // ring_tet[i] holds ring[i]–ring[i+1]
+  used.assign(n, 0);
   used[0] = 1;
   while (ring.size() <= n) {
     bool found = false;
@@ -103,7 +107,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
   if (ring.size() != n + 1 || ring.back() != ring.front()) return false;
   ring.pop_back();
   {
-    std::vector<uint32_t> distinct = ring;
+    distinct = ring;
     std::sort(distinct.begin(), distinct.end());
     if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) return false;
   }
@@ -116,7 +120,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
     return c.on_interface[t[0]] && c.on_interface[t[1]] && c.on_interface[t[2]] && c.on_interface[t[3]];
   };
   double best = before + kGain;
-  std::vector<std::array<uint32_t, 4>> best_made, made;
+  best_made.clear();
   for (size_t apex = 0; apex < n; ++apex) {
     const uint32_t r0 = ring[apex];
     made.clear();
@@ -132,6 +136,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
       std::replace(bottom.begin(), bottom.end(), a, r0);
       if (all_interface(top) || all_interface(bottom)) ok = false;
       q = std::min({q, probe_quality(c, top, probe), probe_quality(c, bottom, probe)});
+      if (!(q > best)) ok = false;  // this fan cannot win: its worst only drops further
       made.push_back(top);
       made.push_back(bottom);
     }
@@ -143,7 +148,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
   }
   if (best_made.empty()) return false;
   // n old slots for 2(n − 2) new tetrahedra: reuse, then append or erase.
-  std::vector<uint32_t> slots = around_ab;
+  slots = around_ab;
   std::sort(slots.begin(), slots.end());
   size_t k = 0;
   for (; k < std::min(slots.size(), best_made.size()); ++k) adj.set_tet(c, slots[k], best_made[k]);
@@ -158,7 +163,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
 
 bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Probe& probe, FlipStats& stats) {
   if (!free_vertex(c, adj, v) || v == probe.v) return false;
-  const std::vector<uint32_t> tets(adj.around(v).begin(), adj.around(v).end());
+  const std::span<const uint32_t> tets = adj.around(v);  // only positions change here
   // The worst quality of v's tetrahedra with v at x; stops (returning a quality ≤ floor) as
   // soon as one is at or below `floor`, which is all a candidate that must beat it needs.
   // The tetrahedron that stopped the last candidate is tried first (a free vertex of the coarse
