@@ -117,7 +117,8 @@ bool CambialGrowth::step() {
   // with its neighbours instead of staying a pit.
   // The interface faces once (the motion changes positions only, not the faces), sorted as
   // TetComplex::interface_faces() returns them: for the curvature term and for contact.
-  std::vector<std::array<uint32_t, 3>> faces = interface_faces(complex_, *adjacency_);
+  const std::vector<std::array<uint32_t, 3>> step_faces = interface_faces(complex_, *adjacency_);  // tet order
+  std::vector<std::array<uint32_t, 3>> faces = step_faces;
   std::sort(faces.begin(), faces.end());
   if (settings_.reverse)
     smooth_interface_curvature(complex_, *adjacency_, faces, 0.1);
@@ -132,7 +133,8 @@ bool CambialGrowth::step() {
       freeze_contacts(complex_, faces, obstacle_faces_, std::max(0.5 * step_thickening, 0.02 * settings_.edge_min));
   stats_.frozen_obstacle += contact.obstacle;
   stats_.frozen_contact += contact.front;
-  const RepairStats repair = growth_repair_step(complex_, *adjacency_, settings_.edge_min, settings_.edge_max);
+  // Curvature and contact moved and froze points only: the faces, in tet order, still hold.
+  const RepairStats repair = growth_repair_step(complex_, *adjacency_, step_faces, settings_.edge_min, settings_.edge_max);
   stats_.splits += repair.splits;
   stats_.collapses += repair.collapses;
   stats_.flips += repair.flips23 + repair.flips32;
