@@ -306,17 +306,20 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   auto edge_removal = [&](uint32_t a, uint32_t b) {
     return attempt({0, a, b}, [&] { return remove_edge(c, adj, a, b, probe, stats, max_ring); });
   };
-  // 3-2 flips of its edges (opposite skip_corner first when blocked).
+  // 3-2 flips of its edges (opposite skip_corner first when blocked). Flips are among outside
+  // tetrahedra only, and t is one of those around each of its edges and faces: for any other
+  // t every flip would refuse, so none is tried.
   static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  const bool outside = c.label[t] == TetComplex::kOutside;
   for (const auto& e : kEdge) {
-    if (e[0] == skip_corner || e[1] == skip_corner) continue;
+    if (!outside || e[0] == skip_corner || e[1] == skip_corner) continue;
     if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
   }
   for (int f = 0; f < 4; ++f) {
-    if (skip_corner >= 0 && f != skip_corner) continue;
+    if (!outside || (skip_corner >= 0 && f != skip_corner)) continue;
     if (attempt({1, t, uint32_t(f)}, [&] { return flip_23(c, adj, t, f, probe, stats); })) return true;
   }
-  if (skip_corner >= 0)
+  if (outside && skip_corner >= 0)
     for (const auto& e : kEdge)
       if (e[0] == skip_corner || e[1] == skip_corner)
         if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
