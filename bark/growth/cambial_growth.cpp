@@ -125,22 +125,26 @@ bool CambialGrowth::step() {
   // shrinking surface from folding where it is concave.
   // Forwards, the same term (weaker) lets a vertex that a blocked move left behind catch up
   // with its neighbours instead of staying a pit.
+  // The interface faces once (the motion changes positions only, not the faces), sorted as
+  // TetComplex::interface_faces() returns them: for the curvature term and for contact.
+  const std::vector<std::array<uint32_t, 3>> step_faces = interface_faces(complex_, *adjacency_);  // tet order
+  std::vector<std::array<uint32_t, 3>> faces = step_faces;
+  std::sort(faces.begin(), faces.end());
   if (settings_.reverse)
-    smooth_interface_curvature(complex_, 0.1);
+    smooth_interface_curvature(complex_, *adjacency_, faces, 0.1);
   else if (settings_.curvature > 0)
-    smooth_interface_curvature(complex_, settings_.curvature, true);
+    smooth_interface_curvature(complex_, *adjacency_, faces, settings_.curvature, true);
   // Sec. 4.5: vertices that came within half the step's thickening of an obstacle or of
   // another part of the front stop there for good (a crease wound where fronts meet).
   const double step_thickening = std::abs(settings_.function.cumulative(age_at(step_ + 1)) -
                                           settings_.function.cumulative(age_at(step_))) *
                                  (1 + std::abs(double(settings_.function.eccentricity)));
-  std::vector<std::array<uint32_t, 3>> faces = interface_faces(complex_, *adjacency_);
-  std::sort(faces.begin(), faces.end());
   const ContactStats contact =
       freeze_contacts(complex_, faces, obstacle_faces_, std::max(0.5 * step_thickening, 0.02 * settings_.edge_min));
   stats_.frozen_obstacle += contact.obstacle;
   stats_.frozen_contact += contact.front;
-  const RepairStats repair = growth_repair_step(complex_, *adjacency_, settings_.edge_min, settings_.edge_max);
+  // Curvature and contact moved and froze points only: the faces, in tet order, still hold.
+  const RepairStats repair = growth_repair_step(complex_, *adjacency_, step_faces, settings_.edge_min, settings_.edge_max);
   stats_.splits += repair.splits;
   stats_.collapses += repair.collapses;
   stats_.flips += repair.flips23 + repair.flips32;

@@ -13,8 +13,13 @@ RepairStats growth_repair_step(TetComplex& c, double min_length, double max_leng
 
 RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_length, double max_length,
                                const RepairSettings& settings) {
+  return growth_repair_step(c, adj, interface_faces(c, adj), min_length, max_length, settings);
+}
+
+RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                               double min_length, double max_length, const RepairSettings& settings) {
   RepairStats st;
-  st.splits = split_long_interface_edges(c, adj, max_length);
+  st.splits = split_long_interface_edges(c, adj, faces, max_length);
   st.collapses = collapse_short_interface_edges(c, adj, min_length, max_length);
   std::vector<uint32_t> interface;
   for (uint32_t v = 0; v < c.points.size(); ++v)

@@ -37,5 +37,10 @@ struct RepairSettings {
 RepairStats growth_repair_step(TetComplex& c, double min_length, double max_length, const RepairSettings& settings = {});
 RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_length, double max_length,
                                const RepairSettings& settings = {});
+// The same from the interface faces the caller already has (interface_faces(c, adj) of the
+// current complex, in its order): a growth step finds them once for curvature, contact and
+// the splits.
+RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                               double min_length, double max_length, const RepairSettings& settings = {});
 
 }  // namespace phellem::bark

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <tuple>
+#include <unordered_map>
 
 namespace phellem::bark {
 
@@ -213,6 +214,26 @@ long collapse_short_interface_edges(TetComplex& c, double min_length, double max
 
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length, double max_length) {
   long collapses = 0;
+  // A collapse of a–b reads only the tetrahedra around a and b (corners, positions, flags) and
+  // those sharing a face with them (labels). Collapse number n stamps n on every corner of
+  // the tetrahedra around its two ends, before and after: an edge whose attempt failed after
+  // f collapses, none of whose tetrahedra has a corner stamped f or later since, would fail
+  // again, and is not retried (most short edges fail every pass: the passes cost half as much).
+  std::vector<long> stamp(c.points.size(), -1);
+  std::unordered_map<uint64_t, long> failed_at;  // edge a < b → collapses made when it failed
+  std::vector<uint32_t> corners;
+  auto gather = [&](uint32_t a, uint32_t b) {
+    for (uint32_t v : {a, b})
+      for (uint32_t t : adj.around(v)) corners.insert(corners.end(), c.tets[t].begin(), c.tets[t].end());
+  };
+  auto touched_since = [&](uint32_t a, uint32_t b, long f) {
+    for (uint32_t v : {a, b})
+      for (uint32_t t : adj.around(v))
+        for (uint32_t w : c.tets[t])
+          if (stamp[w] >= f) return true;
+    return false;
+  };
+  long made_total = 0;
   for (int pass = 0; pass < 8; ++pass) {
     std::vector<std::tuple<double, uint32_t, uint32_t>> todo;
     for (const auto& f : interface_faces(c, adj))
@@ -228,7 +249,18 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
     for (const auto& [len0, a, b] : todo) {
       if (!c.on_interface[a] || !c.on_interface[b]) continue;  // an end went in this pass
       if ((c.points[a] - c.points[b]).norm() >= min_length) continue;
-      if (collapse_interface_edge(c, adj, a, b, max_length)) ++made;
+      const uint64_t key = (uint64_t(a) << 32) | b;
+      if (const auto it = failed_at.find(key); it != failed_at.end() && !touched_since(a, b, it->second)) continue;
+      corners.clear();
+      gather(a, b);
+      if (collapse_interface_edge(c, adj, a, b, max_length)) {
+        ++made;
+        gather(a, b);
+        for (uint32_t w : corners) stamp[w] = made_total;
+        ++made_total;
+      } else {
+        failed_at[key] = made_total;
+      }
     }
     collapses += made;
     if (made == 0) break;

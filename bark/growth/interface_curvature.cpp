@@ -17,7 +17,12 @@ bool positive(const TetComplex& c, const std::array<uint32_t, 4>& t) {
 }  // namespace
 
 long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards) {
-  const auto faces = c.interface_faces();
+  const TetAdjacency adj(c);
+  return smooth_interface_curvature(c, adj, c.interface_faces(), rate, only_outwards);
+}
+
+long smooth_interface_curvature(TetComplex& c, const TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                double rate, bool only_outwards) {
   const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
   std::vector<Eigen::Vector3d> sum(c.points.size(), Eigen::Vector3d::Zero());
   std::vector<int> count(c.points.size(), 0);
@@ -26,9 +31,6 @@ long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards) 
       sum[f[size_t(k)]] += c.points[f[size_t(k + 1) % 3]];
       ++count[f[size_t(k)]];
     }
-  std::vector<std::vector<uint32_t>> around(c.points.size());
-  for (uint32_t t = 0; t < c.tets.size(); ++t)
-    for (uint32_t v : c.tets[t]) around[v].push_back(t);
   std::vector<Eigen::Vector3d> target(c.points.size());
   for (size_t v = 0; v < c.points.size(); ++v)
     if (count[v] > 0) {
@@ -44,7 +46,7 @@ long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards) 
     for (int h = 0; h < 4; ++h, delta *= 0.5) {
       c.points[v] = start + delta;
       bool ok = true;
-      for (uint32_t t : around[v]) ok = ok && positive(c, c.tets[t]);
+      for (uint32_t t : adj.around(v)) ok = ok && positive(c, c.tets[t]);  // any order: all must hold
       if (ok) break;
       c.points[v] = start;
     }

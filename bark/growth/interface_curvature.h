@@ -5,7 +5,7 @@
 // move is halved or dropped if it would invert a tetrahedron.
 #pragma once
 
-#include "bark/growth/tet_complex.h"
+#include "bark/growth/tet_adjacency.h"
 
 namespace phellem::bark {
 
@@ -14,5 +14,9 @@ namespace phellem::bark {
 // does not shrink). Returns the number of vertices moved. Deterministic (Jacobi: all targets
 // from the old positions).
 long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards = false);
+// The same with what a growth step already holds: the adjacency and the interface faces sorted
+// (as TetComplex::interface_faces() returns them), so nothing is rebuilt from all tetrahedra.
+long smooth_interface_curvature(TetComplex& c, const TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                double rate, bool only_outwards = false);
 
 }  // namespace phellem::bark

@@ -40,10 +40,14 @@ long split_long_interface_edges(TetComplex& c, double max_length, long max_split
 }
 
 long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, double max_length, long max_splits) {
+  return split_long_interface_edges(c, adj, interface_faces(c, adj), max_length, max_splits);
+}
+
+long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                double max_length, long max_splits) {
   // The interface is scanned once; afterwards only the edges a split makes are new (the two
   // halves, shorter, and the two from the new vertex to the apexes across the edge), so they
   // join a queue of long edges, longest first (ties by index: deterministic).
-  const std::vector<std::array<uint32_t, 3>> faces = interface_faces(c, adj);
   std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
   using Item = std::tuple<double, uint32_t, uint32_t>;
   std::priority_queue<Item> queue;

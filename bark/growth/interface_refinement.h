@@ -16,6 +16,10 @@ namespace phellem::bark {
 long split_long_interface_edges(TetComplex& c, double max_length, long max_splits = 1000000);
 // The same, keeping an adjacency the caller goes on using in step.
 long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, double max_length, long max_splits = 1000000);
+// The same from the interface faces the caller already has (interface_faces(c, adj) of the
+// current complex, in its order).
+long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                double max_length, long max_splits = 1000000);
 
 // The interface's edges (each once, smaller index first).
 std::vector<std::array<uint32_t, 2>> interface_edges(const TetComplex& c);

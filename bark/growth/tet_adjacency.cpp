@@ -14,15 +14,6 @@ bool positive_tet(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eige
   return CGAL::orientation(p(a), p(b), p(c), p(d)) == CGAL::POSITIVE;
 }
 
-double tet_quality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, const Eigen::Vector3d& d) {
-  const Eigen::Vector3d ab = b - a, ac = c - a, ad = d - a;
-  const double v = ab.cross(ac).dot(ad) / 6.0;
-  const double l2 = (ab.squaredNorm() + ac.squaredNorm() + ad.squaredNorm() + (c - b).squaredNorm() +
-                     (d - b).squaredNorm() + (d - c).squaredNorm()) / 6.0;
-  if (!(l2 > 0)) return 0;
-  return 6.0 * std::sqrt(2.0) * v / (l2 * std::sqrt(l2));
-}
-
 TetAdjacency::TetAdjacency(const TetComplex& c) {
   const size_t n = c.points.size();
   offset_.assign(n + 1, 0);

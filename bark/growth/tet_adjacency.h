@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -29,7 +30,17 @@ inline bool positive_tet(const TetComplex& c, const std::array<uint32_t, 4>& t) 
 
 // Shape quality of a tetrahedron: 6√2·V / ℓ_rms³, 1 for the regular tetrahedron, 0 when flat,
 // negative when inverted (the volume–length measure of mesh optimisation).
-double tet_quality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, const Eigen::Vector3d& d);
+// Inline: the repair evaluates it millions of times a step (the same operations as out of
+// line under -ffp-contract=off, so the same bits).
+inline double tet_quality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                          const Eigen::Vector3d& d) {
+  const Eigen::Vector3d ab = b - a, ac = c - a, ad = d - a;
+  const double v = ab.cross(ac).dot(ad) / 6.0;
+  const double l2 = (ab.squaredNorm() + ac.squaredNorm() + ad.squaredNorm() + (c - b).squaredNorm() +
+                     (d - b).squaredNorm() + (d - c).squaredNorm()) / 6.0;
+  if (!(l2 > 0)) return 0;
+  return 6.0 * std::sqrt(2.0) * v / (l2 * std::sqrt(l2));
+}
 inline double tet_quality(const TetComplex& c, const std::array<uint32_t, 4>& t) {
   return tet_quality(c.points[t[0]], c.points[t[1]], c.points[t[2]], c.points[t[3]]);
 }

@@ -68,23 +68,27 @@ bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Pro
 
 bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
                  int max_ring) {
-  std::vector<uint32_t> around_ab;
+  // Scratch buffers kept per thread: a step tries this hundreds of thousands of times.
+  thread_local std::vector<uint32_t> around_ab, ring, ring_tet, distinct, slots;
+  thread_local std::vector<std::array<uint32_t, 2>> links;
+  thread_local std::vector<uint8_t> used;
+  thread_local std::vector<std::array<uint32_t, 4>> best_made, made;
   adj.edge_tets(c, a, b, around_ab);
   const size_t n = around_ab.size();
   if (n < 3 || n > size_t(max_ring)) return false;
   for (uint32_t t : around_ab)
     if (c.label[t] != TetComplex::kOutside) return false;
   // The ring of the edge, in order: each tetrahedron a–b–x–y links x to y; they must close.
-  std::vector<std::array<uint32_t, 2>> links(n);
+  links.resize(n);
   for (size_t i = 0; i < n; ++i) {
     int k = 0;
     for (uint32_t w : c.tets[around_ab[i]])
       if (w != a && w != b) links[i][size_t(k++)] = w;
     if (k != 2) return false;
   }
-  std::vector<uint32_t> ring{links[0][0], links[0][1]};
-  std::vector<uint32_t> ring_tet{around_ab[0]};  // ring_tet[i] holds ring[i]–ring[i+1]
-  std::vector<uint8_t> used(n, 0);
+  ring.assign({links[0][0], links[0][1]});
+  ring_tet.assign({around_ab[0]});  // ring_tet[i] holds ring[i]–ring[i+1]
+  used.assign(n, 0);
   used[0] = 1;
   while (ring.size() <= n) {
     bool found = false;
@@ -103,7 +107,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
   if (ring.size() != n + 1 || ring.back() != ring.front()) return false;
   ring.pop_back();
   {
-    std::vector<uint32_t> distinct = ring;
+    distinct = ring;
     std::sort(distinct.begin(), distinct.end());
     if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) return false;
   }
@@ -116,7 +120,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
     return c.on_interface[t[0]] && c.on_interface[t[1]] && c.on_interface[t[2]] && c.on_interface[t[3]];
   };
   double best = before + kGain;
-  std::vector<std::array<uint32_t, 4>> best_made, made;
+  best_made.clear();
   for (size_t apex = 0; apex < n; ++apex) {
     const uint32_t r0 = ring[apex];
     made.clear();
@@ -132,6 +136,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
       std::replace(bottom.begin(), bottom.end(), a, r0);
       if (all_interface(top) || all_interface(bottom)) ok = false;
       q = std::min({q, probe_quality(c, top, probe), probe_quality(c, bottom, probe)});
+      if (!(q > best)) ok = false;  // this fan cannot win: its worst only drops further
       made.push_back(top);
       made.push_back(bottom);
     }
@@ -143,7 +148,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
   }
   if (best_made.empty()) return false;
   // n old slots for 2(n − 2) new tetrahedra: reuse, then append or erase.
-  std::vector<uint32_t> slots = around_ab;
+  slots = around_ab;
   std::sort(slots.begin(), slots.end());
   size_t k = 0;
   for (; k < std::min(slots.size(), best_made.size()); ++k) adj.set_tet(c, slots[k], best_made[k]);
@@ -158,17 +163,37 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
 
 bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Probe& probe, FlipStats& stats) {
   if (!free_vertex(c, adj, v) || v == probe.v) return false;
-  const std::vector<uint32_t> tets(adj.around(v).begin(), adj.around(v).end());
-  auto worst_at = [&](const Eigen::Vector3d& x, uint32_t* worst_tet) {
+  const std::span<const uint32_t> tets = adj.around(v);  // only positions change here
+  // The worst quality of v's tetrahedra with v at x; stops (returning a quality ≤ floor) as
+  // soon as one is at or below `floor`, which is all a candidate that must beat it needs.
+  // The tetrahedron that stopped the last candidate is tried first (a free vertex of the coarse
+  // outside has a hundred tetrahedra, and the same one usually stops every candidate).
+  size_t first = 0;
+  auto worst_at = [&](const Eigen::Vector3d& x, uint32_t* worst_tet, double floor) {
     Probe p = probe;
     const Eigen::Vector3d keep = c.points[v];
     c.points[v] = x;
+    if (!worst_tet) {
+      const double q0 = probe_quality(c, c.tets[tets[first]], p);
+      if (q0 <= floor) {
+        c.points[v] = keep;
+        return q0;
+      }
+    }
     double q = 1e300;
-    for (uint32_t t : tets) {
+    for (size_t i = 0; i < tets.size(); ++i) {
+      const uint32_t t = tets[i];
       const double qt = probe_quality(c, c.tets[t], p);
       if (qt < q) {
         q = qt;
-        if (worst_tet) *worst_tet = t;
+        if (worst_tet) {
+          *worst_tet = t;
+          first = i;
+        }
+        if (q <= floor) {
+          first = i;
+          break;
+        }
       }
     }
     c.points[v] = keep;
@@ -176,7 +201,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
   };
   const Eigen::Vector3d start = c.points[v];
   uint32_t worst = tets.front();
-  const double before = worst_at(start, &worst);
+  const double before = worst_at(start, &worst, -1e300);
   // Candidates: the mean of the neighbours (Laplacian smoothing) and pushes of v away from the
   // plane of its worst tetrahedron's opposite face (the direction that inflates it).
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -207,7 +232,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
   double best = before;
   Eigen::Vector3d best_x = start;
   for (const auto& x : candidates) {
-    const double q = worst_at(x, nullptr);
+    const double q = worst_at(x, nullptr, best + kGain);
     if (q > best + kGain) {
       c.points[v] = x;
       bool ok = true;
@@ -245,25 +270,59 @@ uint32_t split_free_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
 
 namespace {
 
+// The operations (relocations, edge removals, 2-3 flips) that failed since the complex last
+// changed, within one unblock_vertex (one probe): every change there is counted in its
+// FlipStats, so an unchanged count means the same complex, and retrying such an operation
+// would fail again (the tetrahedra around v share edges and free corners, so each is tried
+// from several of them).
+class FailedOps {
+ public:
+  using Key = std::array<uint32_t, 3>;  // {kind, and what it is on}
+  // op() unless it is known to fail; remembers a failure.
+  template <class Op>
+  bool attempt(const Key& key, const FlipStats& s, Op&& op) {
+    if (changes(s) != at_) {
+      failed_.clear();
+      at_ = changes(s);
+    }
+    if (std::find(failed_.begin(), failed_.end(), key) != failed_.end()) return false;
+    if (op()) return true;
+    failed_.push_back(key);
+    return false;
+  }
+
+ private:
+  static long changes(const FlipStats& s) { return s.flips23 + s.flips32 + s.relocated + s.splits + s.edge_removals; }
+  std::vector<Key> failed_;
+  long at_ = -1;
+};
+
 // Flips and relocations that improve tetrahedron t (its faces, its edges, its free vertices);
 // with max_length > 0, a split of its longest edge not between interface points if longer.
 bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& probe, FlipStats& stats, int skip_corner,
-                 double max_length, bool relocate, int max_ring) {
+                 double max_length, bool relocate, int max_ring, FailedOps* failed = nullptr) {
   const std::array<uint32_t, 4> T = c.tets[t];
-  // 3-2 flips of its edges (opposite skip_corner first when blocked).
+  auto attempt = [&](const FailedOps::Key& key, auto&& op) { return failed ? failed->attempt(key, stats, op) : op(); };
+  auto edge_removal = [&](uint32_t a, uint32_t b) {
+    return attempt({0, a, b}, [&] { return remove_edge(c, adj, a, b, probe, stats, max_ring); });
+  };
+  // 3-2 flips of its edges (opposite skip_corner first when blocked). Flips are among outside
+  // tetrahedra only, and t is one of those around each of its edges and faces: for any other
+  // t every flip would refuse, so none is tried.
   static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  const bool outside = c.label[t] == TetComplex::kOutside;
   for (const auto& e : kEdge) {
-    if (e[0] == skip_corner || e[1] == skip_corner) continue;
-    if (remove_edge(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats, max_ring)) return true;
+    if (!outside || e[0] == skip_corner || e[1] == skip_corner) continue;
+    if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
   }
   for (int f = 0; f < 4; ++f) {
-    if (skip_corner >= 0 && f != skip_corner) continue;
-    if (flip_23(c, adj, t, f, probe, stats)) return true;
+    if (!outside || (skip_corner >= 0 && f != skip_corner)) continue;
+    if (attempt({1, t, uint32_t(f)}, [&] { return flip_23(c, adj, t, f, probe, stats); })) return true;
   }
-  if (skip_corner >= 0)
+  if (outside && skip_corner >= 0)
     for (const auto& e : kEdge)
       if (e[0] == skip_corner || e[1] == skip_corner)
-        if (remove_edge(c, adj, T[size_t(e[0])], T[size_t(e[1])], probe, stats, max_ring)) return true;
+        if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
   if (max_length > 0) {
     double longest = max_length;
     int best = -1;
@@ -283,8 +342,11 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   }
   if (!relocate) return false;
   bool moved = false;
-  for (int i = 0; i < 4; ++i)
-    if (i != skip_corner) moved = relocate_free_vertex(c, adj, T[size_t(i)], probe, stats) || moved;
+  for (int i = 0; i < 4; ++i) {
+    if (i == skip_corner) continue;
+    const uint32_t w = T[size_t(i)];
+    moved = attempt({2, w, 0}, [&] { return relocate_free_vertex(c, adj, w, probe, stats); }) || moved;
+  }
   return moved;
 }
 
@@ -303,6 +365,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
   const Probe probe{v, target};
   constexpr double kBlocking = 0.02;
   bool changed = false;
+  FailedOps failed;
   for (int round = 0; round < 4; ++round) {
     std::vector<std::pair<double, std::array<uint32_t, 4>>> blocking;
     for (uint32_t t : adj.around(v)) {
@@ -316,7 +379,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
       const long t = find_tet(c, adj, corners);
       if (t < 0) continue;
       const int i = int(std::find(corners.begin(), corners.end(), v) - corners.begin());
-      any = improve_tet(c, adj, uint32_t(t), probe, stats, i, 0, true, 6) || any;
+      any = improve_tet(c, adj, uint32_t(t), probe, stats, i, 0, true, 6, &failed) || any;
     }
     changed = changed || any;
     if (!any) break;
