@@ -27,7 +27,12 @@ bark::GrowthStroke parse_stroke(JsonObject o) {
 }  // namespace
 
 float GrowthSpeedMap::at(double u, double v) const {
-  // Bilinear between texel centres, repeating.
+  // Bilinear between texel centres, repeating: the coordinates wrapped into [0, 1) first, so
+  // huge or non-finite UVs of a mesh file never reach the integer conversions.
+  if (!std::isfinite(u)) u = 0;
+  if (!std::isfinite(v)) v = 0;
+  u -= std::floor(u);
+  v -= std::floor(v);
   const double x = u * width - 0.5, y = v * height - 0.5;
   const double fx = std::floor(x), fy = std::floor(y);
   const double tx = x - fx, ty = y - fy;
