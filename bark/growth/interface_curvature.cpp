@@ -1,20 +1,9 @@
 #include "bark/growth/interface_curvature.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include "bark/growth/interface_motion.h"
+#include "bark/growth/tet_adjacency.h"
 
 namespace phellem::bark {
-
-namespace {
-
-bool positive(const TetComplex& c, const std::array<uint32_t, 4>& t) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  auto p = [&](uint32_t i) { return K::Point_3(c.points[i].x(), c.points[i].y(), c.points[i].z()); };
-  return CGAL::orientation(p(t[0]), p(t[1]), p(t[2]), p(t[3])) == CGAL::POSITIVE;
-}
-
-}  // namespace
 
 long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards) {
   const TetAdjacency adj(c);
@@ -46,7 +35,7 @@ long smooth_interface_curvature(TetComplex& c, const TetAdjacency& adj, const st
     for (int h = 0; h < 4; ++h, delta *= 0.5) {
       c.points[v] = start + delta;
       bool ok = true;
-      for (uint32_t t : adj.around(v)) ok = ok && positive(c, c.tets[t]);  // any order: all must hold
+      for (uint32_t t : adj.around(v)) ok = ok && positive_tet(c, c.tets[t]);  // any order: all must hold
       if (ok) break;
       c.points[v] = start;
     }

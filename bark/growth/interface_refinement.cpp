@@ -84,15 +84,7 @@ long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vec
     const Eigen::Vector3d curved = mid + 0.25 * (normals[a].dot(c.points[a] - mid) * normals[a] +
                                                  normals[b].dot(c.points[b] - mid) * normals[b]);
     normals.push_back((normals[a] + normals[b]).normalized());
-    // Every tetrahedron around the edge splits in two with its label: the half at a's end
-    // keeps the slot, the half at b's end is appended.
-    for (uint32_t t : shared) {
-      std::array<uint32_t, 4> half = c.tets[t], kept = c.tets[t];
-      std::replace(half.begin(), half.end(), a, m);
-      std::replace(kept.begin(), kept.end(), b, m);
-      adj.set_tet(c, t, kept);
-      adj.add_tet(c, half, c.label[t]);
-    }
+    adj.split_edge_tets(c, a, b, m, shared);  // every tetrahedron around the edge, in two
     c.points[m] = curved;
     bool ok = true;
     for (uint32_t t : adj.around(m)) ok = ok && positive_tet(c, c.tets[t]);

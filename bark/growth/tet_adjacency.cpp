@@ -112,6 +112,16 @@ uint32_t TetAdjacency::add_tet(TetComplex& c, const std::array<uint32_t, 4>& cor
   return t;
 }
 
+void TetAdjacency::split_edge_tets(TetComplex& c, uint32_t a, uint32_t b, uint32_t m, const std::vector<uint32_t>& shared) {
+  for (uint32_t t : shared) {
+    std::array<uint32_t, 4> half = c.tets[t], kept = c.tets[t];
+    std::replace(half.begin(), half.end(), a, m);
+    std::replace(kept.begin(), kept.end(), b, m);
+    set_tet(c, t, kept);
+    add_tet(c, half, c.label[t]);
+  }
+}
+
 std::vector<std::array<uint32_t, 3>> interface_faces(const TetComplex& c, const TetAdjacency& adj) {
   // Fixed blocks of tetrahedra, each collected on its own and joined in block order: the same
   // faces in the same order whatever the thread count.

@@ -75,6 +75,10 @@ class TetAdjacency {
   void set_tet(TetComplex& c, uint32_t t, const std::array<uint32_t, 4>& corners);
   // Appends a tetrahedron with a label; returns its index.
   uint32_t add_tet(TetComplex& c, const std::array<uint32_t, 4>& corners, uint8_t label);
+  // Splits every tetrahedron of `shared` (those around edge a–b) in two at the new point m on
+  // the edge, with its label: the half at a's end keeps the slot, the half at b's end is
+  // appended.
+  void split_edge_tets(TetComplex& c, uint32_t a, uint32_t b, uint32_t m, const std::vector<uint32_t>& shared);
 
  private:
   std::vector<uint32_t> offset_, flat_;  // compressed rows as built

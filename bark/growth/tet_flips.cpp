@@ -257,13 +257,7 @@ uint32_t split_free_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
   c.on_interface[m] = 0;  // not an interface edge, though both ends may be interface points
   c.on_box[m] = 0;
   c.frozen[m] = 0;
-  for (uint32_t t : shared) {
-    std::array<uint32_t, 4> half = c.tets[t], kept = c.tets[t];
-    std::replace(half.begin(), half.end(), a, m);
-    std::replace(kept.begin(), kept.end(), b, m);
-    adj.set_tet(c, t, kept);
-    adj.add_tet(c, half, c.label[t]);
-  }
+  adj.split_edge_tets(c, a, b, m, shared);
   ++stats.splits;
   return m;
 }
