@@ -74,8 +74,8 @@ int run_growth(const cli::Options& o) {
       bar.finish();
       ObjectBark& b = bark.objects[oi];
       b.grown = grown_surface(g);
-      // Stress bark cracks on the surface of this frame.
-      b.cracked = crack_grown_surface(l.desc, oi, *b.grown, !o.quiet);
+      // Stress bark: the cracks as they stand at this step (they open as the surface grows).
+      b.cracked = g.cracks() ? g.cracks()->result() : nullptr;
     }
     const auto scene = build_render_scene(frame_desc, bark, frame_desc.camera, l.width, l.height, !o.quiet);
     render_frame(o, l, *scene, Camera(frame_desc.camera, l.width, l.height), f, frames, out);

@@ -14,20 +14,13 @@ bool has_simulated_bark(const ObjectDesc& o) {
   return o.stress_bark || o.growth || (o.type == ObjectType::Tree && o.tree.strip_bark);
 }
 
-std::shared_ptr<const bark::CrackedMesh> crack_grown_surface(const SceneDesc& desc, size_t object,
-                                                             const bark::TriMesh& grown, bool progress) {
-  const ObjectDesc& o = desc.objects.at(object);
-  // "cracks": false renders the grown surface without its stress bark's cracks.
-  if (!o.stress_bark || !o.growth->cracks) return nullptr;
-  return run_stress_object(desc, object, std::nullopt, progress, &grown).cracked;
-}
-
 ObjectBark simulate_object_bark(const SceneDesc& desc, size_t object, bool progress) {
   const ObjectDesc& o = desc.objects.at(object);
   ObjectBark out;
   if (o.growth) {
-    out.grown = run_growth_object(desc, object, progress).surface;
-    out.cracked = crack_grown_surface(desc, object, *out.grown, progress);
+    const GrowthRun run = run_growth_object(desc, object, progress);
+    out.grown = run.surface;
+    out.cracked = run.cracked;  // stress bark cracked as it grew (none with "cracks": false)
   } else if (o.stress_bark) {
     out.cracked = run_stress_object(desc, object, std::nullopt, progress).cracked;
   } else if (o.type == ObjectType::Tree && o.tree.strip_bark) {

@@ -37,9 +37,6 @@ bool has_simulated_bark(const ObjectDesc& o);
 // The bark of one object (strip bark, stress bark, growth and the stress bark of the grown
 // surface), with progress when asked.
 ObjectBark simulate_object_bark(const SceneDesc& desc, size_t object, bool progress);
-// The stress bark of a grown surface (when the object has stress bark and its growth cracks).
-std::shared_ptr<const bark::CrackedMesh> crack_grown_surface(const SceneDesc& desc, size_t object,
-                                                             const bark::TriMesh& grown, bool progress);
 // The bark of every object that has some, in scene order.
 BarkResults simulate_bark(const SceneDesc& desc, bool progress);
 

@@ -91,6 +91,9 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
   }
   if (auto v = o.get("ring_interval")) s.ring_interval = v->integer(0, 100000);
   if (auto v = o.get("cracks")) d.cracks = v->boolean();
+  if (auto v = o.get("crack_iterations")) d.crack_iterations = v->integer(0, 10000);
+  if (auto v = o.get("stretch_stress"))
+    d.stretch_stress = in_range(*v, 0, 1e6f, "stretch_stress must lie in [0, 1e6] (stress per unit strain, in units of the bark's magnitude)");
   if (auto v = o.get("edge_length")) {
     const Vec2f band = v->vec2();
     if (!(band.x() > 0 && band.y() <= 100 && band.x() * 2 < band.y()))

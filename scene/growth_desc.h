@@ -12,7 +12,9 @@
 //     "speed_map": {"file": "paint.png", "scale": 1},   // sec. 4.4: speed × scale × map(uv)
 //     "obstacles": ["wire"],           // names of other mesh or sphere objects
 //     "ring_interval": 10,             // steps between growth rings (0: none)
-//     "cracks": true,                  // with stress bark: crack the grown surface (false: no cracks)
+//     "cracks": true,                  // with stress bark: crack the surface as it grows (false: no cracks)
+//     "crack_iterations": 0,           // stress iterations after each step (0: the bark's iterations spread over the steps)
+//     "stretch_stress": 4,             // stress per unit of strain as the surface stretches (× the bark's magnitude)
 //     "edge_length": [0.004, 0.01],    // m: the interface's edge band (default: from the mesh)
 //     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5},
 //     "reverse": false                 // sec. 4.3: shrink the mesh back to its age_start
@@ -45,6 +47,8 @@ struct GrowthDesc {
   std::vector<std::string> obstacle_names;
   std::vector<size_t> obstacles;  // object indices, resolved once every object is parsed
   bool cracks = true;
+  int crack_iterations = 0;  // 0: ceil(the stress bark's iterations / steps)
+  float stretch_stress = 4;
   std::shared_ptr<const GrowthSpeedMap> speed_map;
   Location where;  // of the growth object itself
 };

@@ -41,6 +41,20 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
   bark::CambialGrowth growth(surface, obstacles, g.settings, desc.file, g.where.path, speed);
   bar.advance();
   bar.finish();
+  // Stress bark cracks as the surface grows (thesis sec. 5): the young surface now, then after
+  // every step.
+  if (obj.stress_bark && g.cracks) {
+    bark::CrackCouplingSettings cs;
+    const int steps = std::max(1, g.settings.steps);
+    cs.iterations_per_step = g.crack_iterations > 0 ? g.crack_iterations
+                                                    : (obj.stress_bark->params.iterations + steps - 1) / steps;
+    cs.stretch_stress = g.stretch_stress;
+    try {
+      growth.couple_cracks(obj.stress_bark->params, cs);
+    } catch (const bark::StressParamError& e) {
+      throw UserError(desc.file, "/objects/" + std::to_string(oi) + "/bark/" + e.key, e.key + ": " + e.message);
+    }
+  }
   return growth;
 }
 
@@ -63,6 +77,7 @@ GrowthRun run_growth_object(const SceneDesc& desc, size_t oi, bool progress,
   }
   GrowthRun run;
   run.surface = grown_surface(growth);
+  if (growth.cracks()) run.cracked = growth.cracks()->result();
   run.rings = growth.rings();
   run.stats = growth.stats();
   run.steps = growth.steps_done();

@@ -15,13 +15,15 @@ namespace phellem {
 
 struct GrowthRun {
   std::shared_ptr<const bark::TriMesh> surface;  // the grown surface (world space, UVs when the input had them)
+  std::shared_ptr<const bark::CrackedMesh> cracked;  // with stress bark (and cracks on): cracked as it grew
   std::vector<bark::GrowthRing> rings;
   bark::CambialGrowthStats stats;
   int steps = 0;
 };
 
-// The growth's surface and obstacles, tetrahedralized (TetGen) and ready to step; a progress
-// line while TetGen runs when asked (errors name the scene).
+// The growth's surface and obstacles, tetrahedralized (TetGen) and ready to step, its cracks
+// coupled when the object has stress bark; a progress line while TetGen runs when asked
+// (errors name the scene).
 bark::CambialGrowth start_growth(const SceneDesc& desc, size_t object_index, bool progress = false);
 
 // All steps; `on_step(growth)` after each (time-lapse frames), when given.

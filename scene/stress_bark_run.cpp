@@ -14,8 +14,7 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 }  // namespace
 
-StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint64_t> seed, bool progress,
-                            const bark::TriMesh* grown) {
+StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint64_t> seed, bool progress) {
   const ObjectDesc& obj = desc.objects.at(oi);
   if (!obj.stress_bark) throw std::logic_error("run_stress_object: the object has no stress bark");
   const std::string where = "/objects/" + std::to_string(oi);
@@ -26,7 +25,7 @@ StressRun run_stress_object(const SceneDesc& desc, size_t oi, std::optional<uint
   const auto tp = Clock::now();
   // Stages: the surface (a tree's tubes joined), the remeshing, the stress mesh and its set-up.
   Progress prepare("prepare " + name, 3, progress);
-  bark::TriMesh input = grown ? *grown : object_trimesh(obj);
+  bark::TriMesh input = object_trimesh(obj);
   prepare.advance();
   // The mesh's own problems are reported at the mesh file, or at the object for procedural ones.
   bark::StressMesh mesh = [&] {

@@ -22,8 +22,6 @@ struct StressRun {
   double preprocess_s = 0, simulate_s = 0;
 };
 
-// `input`: the surface to crack instead of the object's own (its grown surface), if given.
-StressRun run_stress_object(const SceneDesc& desc, size_t object_index, std::optional<uint64_t> seed, bool progress,
-                            const bark::TriMesh* input = nullptr);
+StressRun run_stress_object(const SceneDesc& desc, size_t object_index, std::optional<uint64_t> seed, bool progress);
 
 }  // namespace phellem

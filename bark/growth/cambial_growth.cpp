@@ -79,7 +79,7 @@ GrowthSurface extract_interface(const TetComplex& c) {
 
 CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
                              const std::string& file, const std::string& where, const std::vector<float>& vertex_speed)
-    : settings_(s) {
+    : settings_(s), file_(file), where_(where) {
   if (!vertex_speed.empty() && vertex_speed.size() != surface.positions.size())
     throw std::invalid_argument("CambialGrowth: one speed per surface vertex");
   std::vector<int64_t> first_of;  // welded vertex -> the input vertex it was made from
@@ -111,6 +111,16 @@ double CambialGrowth::age_at(int k) const {
 }
 
 double CambialGrowth::age() const { return age_at(step_); }
+
+void CambialGrowth::couple_cracks(const StressParams& params, const CrackCouplingSettings& settings) {
+  const auto t0 = Clock::now();
+  auto cracks = std::make_unique<GrowthCracks>(params, settings);
+  cracks->step(complex_, *adjacency_, file_, where_ + "/cracks");
+  cracks_ = std::move(cracks);
+  stats_.cracks_s += since(t0);
+  stats_.vertices_end = interface_vertex_count(complex_);
+  stats_.tets_end = complex_.tets.size();
+}
 
 bool CambialGrowth::step() {
   if (step_ >= settings_.steps) return false;
@@ -150,6 +160,11 @@ bool CambialGrowth::step() {
   stats_.flips += repair.flips23 + repair.flips32;
   ++step_;
   stats_.steps_s += since(t0);
+  if (cracks_) {  // thesis sec. 5: the stress and cracks carried to the grown surface, then cracking
+    const auto tc = Clock::now();
+    cracks_->step(complex_, *adjacency_, file_, where_ + "/cracks");
+    stats_.cracks_s += since(tc);
+  }
   stats_.vertices_end = interface_vertex_count(complex_);
   stats_.tets_end = complex_.tets.size();
   if (settings_.ring_interval > 0 && (step_ % settings_.ring_interval == 0 || step_ == settings_.steps)) {

@@ -12,11 +12,13 @@
 // frames, crack coupling); it never runs a step by itself.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "bark/geometry/tri_mesh.h"
+#include "bark/growth/growth_cracks.h"
 #include "bark/growth/growth_rings.h"
 #include "bark/growth/tet_adjacency.h"
 #include "bark/growth/tet_complex.h"
@@ -40,7 +42,8 @@ struct CambialGrowthStats {
   size_t tets_start = 0, tets_end = 0;
   long moved = 0, shortened = 0, clamped = 0, splits = 0, collapses = 0, flips = 0;
   long frozen_obstacle = 0, frozen_contact = 0;  // interface vertices stopped by an obstacle, by another front
-  double setup_s = 0, steps_s = 0;  // TetGen; all steps
+  double setup_s = 0, steps_s = 0;  // TetGen; all steps (without the crack coupling)
+  double cracks_s = 0;              // the crack coupling, all steps
 };
 
 // The interface as a compact triangle mesh (outwards), with its UVs when the input had them,
@@ -63,6 +66,13 @@ class CambialGrowth {
   CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
                 const std::string& file, const std::string& where, const std::vector<float>& vertex_speed = {});
 
+  // Couples the stress-field cracking to the growth (growth_cracks.h): the initial interface
+  // cracks now, then again after every step. Throws StressParamError for a parameter the
+  // cracking model refuses on this surface.
+  void couple_cracks(const StressParams& params, const CrackCouplingSettings& settings);
+  // The coupled cracks, or null.
+  const GrowthCracks* cracks() const { return cracks_.get(); }
+
   // One step; false when every step has run.
   bool step();
   int steps_done() const { return step_; }
@@ -79,7 +89,9 @@ class CambialGrowth {
   double age_at(int step) const;
 
   CambialGrowthSettings settings_;
+  std::string file_, where_;  // for errors found while stepping
   TetComplex complex_;
+  std::unique_ptr<GrowthCracks> cracks_;
   std::optional<TetAdjacency> adjacency_;  // of complex_, kept in step by every operation
   std::vector<std::array<uint32_t, 3>> obstacle_faces_;
   std::vector<GrowthRing> rings_;

@@ -165,7 +165,10 @@ bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone
 
 bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, double max_length) {
   if (a == b || !c.on_interface[a] || !c.on_interface[b] || c.on_box[a] || c.on_box[b]) return false;
-  if (c.frozen[a] && c.frozen[b]) return false;
+  // A point on a crack (crack coupling, thesis sec. 5) neither goes nor moves, like a frozen
+  // one: the crack network persists; a point off the crack may still merge into it.
+  auto fixed = [&](uint32_t p) { return c.frozen[p] || (!c.on_crack.empty() && c.on_crack[p]); };
+  if (fixed(a) && fixed(b)) return false;
   std::vector<uint32_t> ab;
   adj.edge_tets(c, a, b, ab);
   if (ab.empty()) return false;
@@ -193,14 +196,14 @@ bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint3
   if (common != apex) return false;
   if (is_interface_face(c, adj, a, apex[0], apex[1]) || is_interface_face(c, adj, b, apex[0], apex[1])) return false;
   if (!link_condition(c, adj, a, b, ab)) return false;
-  // Which end goes: never a frozen one; else the one the refinement added (no input vertex),
+  // Which end goes: never a fixed one; else the one the refinement added (no input vertex),
   // else the later one.
   uint32_t keep = a, gone = b;
-  if (c.frozen[b] || (c.source_vertex[b] >= 0 && c.source_vertex[a] < 0)) std::swap(keep, gone);
+  if (fixed(b) || (c.source_vertex[b] >= 0 && c.source_vertex[a] < 0)) std::swap(keep, gone);
   const Eigen::Vector3d mid = 0.5 * (c.points[a] + c.points[b]);
-  if (!c.frozen[keep] && try_collapse(c, adj, keep, gone, mid, ab, max_length)) return true;
+  if (!fixed(keep) && try_collapse(c, adj, keep, gone, mid, ab, max_length)) return true;
   if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
-  if (!c.frozen[gone] && !c.frozen[keep]) {
+  if (!fixed(gone) && !fixed(keep)) {
     std::swap(keep, gone);
     if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
   }

@@ -7,7 +7,8 @@
 //    complex) and on the interface (it stays a closed 2-manifold: the two ends share exactly
 //    the two neighbours across the edge),
 //  - every resulting tetrahedron is positive (exact predicate) and not much worse in quality,
-//  - no frozen or box point moves or disappears.
+//  - no frozen or box point moves or disappears, nor a point on a crack (crack coupling: an
+//    edge off the crack may still collapse into its crack end).
 // Points are never renumbered (vertex identity matters across steps): the removed point stays
 // in `points`, used by no tetrahedron, with on_interface cleared.
 #pragma once

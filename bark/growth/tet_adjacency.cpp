@@ -122,6 +122,20 @@ void TetAdjacency::split_edge_tets(TetComplex& c, uint32_t a, uint32_t b, uint32
   }
 }
 
+bool split_keeps_positive(const TetComplex& c, uint32_t a, uint32_t b, const Eigen::Vector3d& x,
+                          const std::vector<uint32_t>& shared) {
+  for (uint32_t t : shared) {
+    std::array<Eigen::Vector3d, 4> kept, half;
+    for (size_t j = 0; j < 4; ++j) {
+      const uint32_t q = c.tets[t][j];
+      kept[j] = q == b ? x : c.points[q];
+      half[j] = q == a ? x : c.points[q];
+    }
+    if (!positive_tet(kept[0], kept[1], kept[2], kept[3]) || !positive_tet(half[0], half[1], half[2], half[3])) return false;
+  }
+  return !shared.empty();
+}
+
 std::vector<std::array<uint32_t, 3>> interface_faces(const TetComplex& c, const TetAdjacency& adj) {
   // Fixed blocks of tetrahedra, each collected on its own and joined in block order: the same
   // faces in the same order whatever the thread count.

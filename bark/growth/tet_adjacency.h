@@ -87,6 +87,11 @@ class TetAdjacency {
   std::vector<uint32_t>& row(uint32_t p);
 };
 
+// Whether splitting each tetrahedron of `shared` (those around edge a–b) at the point x leaves
+// both halves positive (exact predicate); false when `shared` is empty.
+bool split_keeps_positive(const TetComplex& c, uint32_t a, uint32_t b, const Eigen::Vector3d& x,
+                          const std::vector<uint32_t>& shared);
+
 // The faces between labels, oriented outwards from the inside (from the tetrahedron with the
 // non-zero label; between two non-zero labels, from the later tetrahedron): the same set as
 // TetComplex::interface_faces(), in tetrahedron order rather than sorted. Relies on

@@ -146,6 +146,9 @@ uint32_t TetComplex::add_point_between(uint32_t a, uint32_t b, double s) {
   if (!uv.empty()) uv.push_back((1 - s) * uv[a] + s * uv[b]);
   if (!speed.empty()) speed.push_back(float((1 - s) * double(speed[a]) + s * double(speed[b])));
   source_vertex.push_back(-1);
+  if (!on_crack.empty()) on_crack.push_back(on_crack[a] && on_crack[b]);
+  parents.resize(m, {kNoParent, kNoParent});
+  parents.push_back({a, b});
   return m;
 }
 

@@ -45,11 +45,19 @@ struct TetComplex {
   std::vector<int32_t> source_vertex;
   // Per point: the user's speed factor (sec. 4.4, a painted map; empty: 1 everywhere).
   std::vector<float> speed;
+  // Per point, for crack coupling (thesis sec. 5; empty unless cracks are coupled): 1 on a
+  // crack edge, so coarsening never collapses it away; and the two points whose edge a split
+  // made it on (kNoParent for TetGen's and the input's points), so that a crack edge split by
+  // the refinement can be followed to its halves.
+  std::vector<uint8_t> on_crack;
+  std::vector<std::array<uint32_t, 2>> parents;  // sized lazily: points beyond its end have none
+  static constexpr uint32_t kNoParent = 0xffffffffu;
 
   static constexpr uint8_t kOutside = 0, kInside = 1, kObstacle = 2;
 
   // Appends a point on the segment a–b at parameter s (0: a), interpolating the per-point
-  // attributes (uv) and taking the flags both ends share; returns its index. Every change of
+  // attributes (uv) and taking the flags both ends share, with a and b as its parents; returns
+  // its index. Every change of
   // the complex that adds points goes through here so no per-point array falls out of step.
   uint32_t add_point_between(uint32_t a, uint32_t b, double s);
 

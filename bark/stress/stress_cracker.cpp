@@ -152,6 +152,7 @@ void StressCracker::crack_step() {
       if (!s.added) continue;
       stats_.snapped += s.snapped;
       stats_.splits += s.split;
+      if (s.split) splits_.push_back({s.split_from, s.split_to, s.tip, s.split_t});
       const size_t t = s.tip.idx();
       if (s.split) separation_[t] = (1 - s.split_t) * separation_[s.split_from.idx()] + s.split_t * separation_[s.split_to.idx()];
       separation_[t] += surplus;
@@ -187,7 +188,7 @@ void StressCracker::run(const std::function<void(int, int)>& progress) {
   }
 }
 
-CrackedMesh StressCracker::result() const {
+CrackedMesh StressCracker::result(std::vector<VertexId>* source_out) const {
   const SurfaceMesh& g = mesh_.mesh();
   const size_t nv = g.number_of_vertices();
   std::vector<std::pair<uint32_t, uint32_t>> edges;
@@ -212,6 +213,7 @@ CrackedMesh StressCracker::result() const {
     out.component[k] = comp[v];
     if (v < displacement_.size()) out.displacement[k] = displacement_[v].cast<float>();
   }
+  if (source_out) *source_out = std::move(source);
   return out;
 }
 

@@ -30,6 +30,13 @@ struct StressStats {
   int iterations = 0;
 };
 
+// An edge split made by crack insertion: the new vertex `tip` at parameter t on from–to, in
+// the order the splits were made (crack coupling replays them in the growth volume).
+struct CrackSplit {
+  VertexId from, to, tip;
+  double t = 0;
+};
+
 class StressCracker {
  public:
   // Throws StressParamError for a parameter out of range, or a UV stroke or stress image on a
@@ -46,11 +53,16 @@ class StressCracker {
   const StressStats& stats() const;
   // τ in force units: threshold × |magnitude| × the initial mean edge length.
   double absolute_threshold() const { return tau_; }
+  // Replaces τ (force units): crack coupling keeps the first growth step's τ for all steps.
+  void set_absolute_threshold(double tau) { tau_ = tau; }
+  // Every edge split so far, in order.
+  const std::vector<CrackSplit>& splits() const { return splits_; }
   // Separation tensors of the last force computation, per vertex (eq. 4, plus residuals).
   const std::vector<Eigen::Matrix3d>& separation() const { return separation_; }
 
   // Post-processing (sec. 3.1.6, 4.2): components, Algorithm 1 widths, virtual displacement.
-  CrackedMesh result() const;
+  // `source` (if given) receives each output vertex's mesh vertex.
+  CrackedMesh result(std::vector<VertexId>* source_out = nullptr) const;
 
  private:
   void apply_growth_hooks();
@@ -66,6 +78,7 @@ class StressCracker {
   StressTopology topology_;
   std::vector<Eigen::Matrix3d> separation_, residual_;  // per vertex
   std::vector<Eigen::Vector3d> displacement_;           // per vertex
+  std::vector<CrackSplit> splits_;
   mutable StressStats stats_;
 };
 

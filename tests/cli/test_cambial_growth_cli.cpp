@@ -42,6 +42,8 @@ TEST(CambialGrowthCli, BadGrowthBlocksAreRefusedAtTheirJsonPath) {
       {R"({"speed_map": {"file": "nope.png"}})", "log", "", "/objects/0/growth/speed_map/file", "nope.png"},
       {R"({"speed_map": {"file": "nope.png", "scale": -1}})", "log", "", "/objects/0/growth/speed_map/file", ""},
       {R"({"steps": 2})", "trunk", "", "/objects/0/growth", "must be closed"},
+      {R"({"crack_iterations": -1})", "log", "", "/objects/0/growth/crack_iterations", ""},
+      {R"({"stretch_stress": -1})", "log", "", "/objects/0/growth/stretch_stress", "stretch_stress must lie in [0, 1e6]"},
       {R"({"steps": 2, "obstacles": ["s"]})", "log", R"(, {"type": "sphere", "name": "s", "center": [0.1, 0.15, 0], "radius": 0.05})",
        "/objects/0/growth/obstacles/0", "intersects"},
   };
@@ -107,6 +109,28 @@ TEST(CambialGrowthCli, SimulateWritesTheGrownSurfaceRingsAndStatsTheSameAtAnyThr
   }
   EXPECT_GT(glb[0].size(), 1000u);
   EXPECT_TRUE(glb[0] == glb[1]) << "the grown surface differs between 1 and 2 threads";
+}
+
+TEST(CambialGrowthCli, CracksOpenAsTheSurfaceGrowsTheSameAtAnyThreadCount) {
+  // Stress bark on a growing log: the cracks are carried from step to step (thesis sec. 5).
+  const std::string dir = test::temp_dir("cambial_growth_cracks");
+  const std::string scene = dir + "/scene.json";
+  const std::string bark = R"(, "bark": {"model": "stress", "pattern": "horizontal", "threshold": 0.6, "cracks_per_iteration": 4})";
+  std::string text = log_scene(R"({"steps": 6, "years": 10, "age_scale": 10, "weibull_c": 1, "thickness": 0.05, "crack_iterations": 2})");
+  text.insert(text.find(R"(, "growth")"), bark);
+  test::write_text(scene, text);
+  std::string glb[2];
+  for (int threads : {1, 2}) {
+    const std::string out = dir + "/out" + std::to_string(threads);
+    const auto r = test::run_phellem_limited("simulate " + scene + " -o " + out + " --quiet --threads " + std::to_string(threads), 8192, 300);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json summary = read_json(out + "/trunk.json");
+    EXPECT_GT(summary["crack_length_m"].get<double>(), 0.05);
+    EXPECT_GT(summary["time_s"]["crack"].get<double>(), 0.0);
+    glb[threads - 1] = test::read_text(out + "/trunk.glb");
+  }
+  EXPECT_GT(glb[0].size(), 1000u);
+  EXPECT_TRUE(glb[0] == glb[1]) << "the cracked grown surface differs between 1 and 2 threads";
 }
 
 TEST(CambialGrowthCli, SliceDrawsTheRingsAndRefusesAPlaneThatMissesTheWood) {

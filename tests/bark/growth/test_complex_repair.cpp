@@ -17,9 +17,11 @@
 #include "bark/growth/interface_motion.h"
 #include "bark/growth/interface_refinement.h"
 #include "bark/growth/tet_flips.h"
+#include "tests/support/growth_checks.h"
 
 using namespace phellem;
 using namespace phellem::bark;
+using phellem::bark::test::closed_manifold;
 
 namespace {
 
@@ -28,19 +30,6 @@ GrowthFunction growth_of(double thickness) {
   g.weibull_c = 1;
   g.thickness = float(thickness);
   return g;
-}
-
-// Every directed interface edge is used once and its reverse once: a closed, consistently
-// oriented 2-manifold (checked on the map-free scan and on TetComplex's own).
-bool closed_manifold(const std::vector<std::array<uint32_t, 3>>& faces) {
-  std::vector<std::array<uint32_t, 2>> directed;
-  for (const auto& f : faces)
-    for (int e = 0; e < 3; ++e) directed.push_back({f[size_t(e)], f[size_t(e + 1) % 3]});
-  std::sort(directed.begin(), directed.end());
-  if (std::adjacent_find(directed.begin(), directed.end()) != directed.end()) return false;
-  for (const auto& e : directed)
-    if (!std::binary_search(directed.begin(), directed.end(), std::array<uint32_t, 2>{e[1], e[0]})) return false;
-  return true;
 }
 
 std::vector<std::array<uint32_t, 3>> sorted(std::vector<std::array<uint32_t, 3>> f) {
