@@ -14,7 +14,7 @@
 //     "ring_interval": 10,             // steps between growth rings (0: none)
 //     "cracks": true,                  // with stress bark: crack the grown surface (false: no cracks)
 //     "edge_length": [0.004, 0.01],    // m: the interface's edge band (default: from the mesh)
-//     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5},
+//     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5, "lattice": 0},  // lattice: TetSettings
 //     "reverse": false                 // sec. 4.3: shrink the mesh back to its age_start
 //   }
 #pragma once
