@@ -119,8 +119,13 @@ InterfaceStepStats advance_interface(TetComplex& c, const GrowthFunction& growth
 }
 
 InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const GrowthFunction& growth, double t0, double t1) {
+  return advance_interface(c, adj, interface_faces(c, adj), growth, t0, t1);
+}
+
+InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                     const GrowthFunction& growth, double t0, double t1) {
   InterfaceStepStats st;
-  const std::vector<Eigen::Vector3d> normals = interface_normals(c, interface_faces(c, adj));
+  const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
   std::vector<uint32_t> movers;
   for (uint32_t v = 0; v < c.points.size(); ++v)
     if (c.on_interface[v] && !c.frozen[v] && normals[v].squaredNorm() > 0) movers.push_back(v);
