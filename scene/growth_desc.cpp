@@ -106,6 +106,7 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
     if (auto w = t.get("quality")) s.tet.quality = in_range(*w, 1.1f, 10, "quality must lie in [1.1, 10] (TetGen's radius-edge bound; lower is better shaped, 1.1 is its limit)");
     if (auto w = t.get("max_volume")) s.tet.max_volume = w->non_negative();
     if (auto w = t.get("padding")) s.tet.padding = in_range(*w, 0.05f, 10, "padding must lie in [0.05, 10] (the room around the mesh, in its largest extents)");
+    if (auto w = t.get("lattice")) s.tet.lattice = in_range(*w, 0, 10, "lattice must lie in [0, 10] (where TetGen's graded starting points begin, in paddings; 0: none)");
     t.finish();
   }
   if (auto v = o.get("reverse")) s.reverse = v->boolean();

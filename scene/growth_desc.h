@@ -16,7 +16,7 @@
 //     "crack_iterations": 0,           // stress iterations after each step (0: the bark's iterations spread over the steps)
 //     "stretch_stress": 4,             // stress per unit of strain as the surface stretches (× the bark's magnitude)
 //     "edge_length": [0.004, 0.01],    // m: the interface's edge band (default: from the mesh)
-//     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5},
+//     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5, "lattice": 0},  // lattice: TetSettings
 //     "reverse": false                 // sec. 4.3: shrink the mesh back to its age_start
 //   }
 #pragma once

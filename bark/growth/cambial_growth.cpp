@@ -127,7 +127,11 @@ bool CambialGrowth::step() {
   const auto t0 = Clock::now();
   // Eq. (1) over [age(k), age(k+1)]: reversed, the second age is the younger one and the
   // thickening negative (the surface moves inwards).
-  const InterfaceStepStats st = advance_interface(complex_, *adjacency_, settings_.function, age_at(step_), age_at(step_ + 1));
+  // The interface faces once (the motion moves points and retessellates the outside only, not
+  // the faces), in tet order: for the motion, the curvature term, contact and the repair.
+  const std::vector<std::array<uint32_t, 3>> step_faces = interface_faces(complex_, *adjacency_);
+  const InterfaceStepStats st =
+      advance_interface(complex_, *adjacency_, step_faces, settings_.function, age_at(step_), age_at(step_ + 1));
   stats_.moved += st.moved;
   stats_.shortened += st.shortened;
   stats_.clamped += st.clamped;
@@ -135,9 +139,7 @@ bool CambialGrowth::step() {
   // shrinking surface from folding where it is concave.
   // Forwards, the same term (weaker) lets a vertex that a blocked move left behind catch up
   // with its neighbours instead of staying a pit.
-  // The interface faces once (the motion changes positions only, not the faces), sorted as
-  // TetComplex::interface_faces() returns them: for the curvature term and for contact.
-  const std::vector<std::array<uint32_t, 3>> step_faces = interface_faces(complex_, *adjacency_);  // tet order
+  // Sorted as TetComplex::interface_faces() returns them: for the curvature term and contact.
   std::vector<std::array<uint32_t, 3>> faces = step_faces;
   std::sort(faces.begin(), faces.end());
   if (settings_.reverse)

@@ -1,10 +1,5 @@
 #include "bark/growth/growth_contact.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -13,17 +8,13 @@
 #include <queue>
 
 #include "bark/growth/interface_motion.h"
+#include "bark/growth/triangle_tree.h"
 
 namespace phellem::bark {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangles = std::vector<K::Triangle_3>;
-using Primitive = CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-
-K::Point_3 cgal(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+using namespace triangle_tree;
 
 enum : uint8_t { kNone = 0, kByObstacle = 1, kByFront = 2 };
 

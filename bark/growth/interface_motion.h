@@ -39,5 +39,9 @@ std::vector<Eigen::Vector3d> interface_normals(const TetComplex& c);
 InterfaceStepStats advance_interface(TetComplex& c, const GrowthFunction& growth, double t0, double t1);
 // The same, keeping an adjacency the caller goes on using in step.
 InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const GrowthFunction& growth, double t0, double t1);
+// The same with the interface faces (interface_faces(c, adj)) the caller has already: the
+// motion moves points and retessellates only outside tetrahedra, so they hold after it too.
+InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                     const GrowthFunction& growth, double t0, double t1);
 
 }  // namespace phellem::bark

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 
+#include "bark/growth/outside_lattice.h"
 #include "util/errors.h"
 
 namespace phellem::bark {
@@ -204,9 +205,18 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
   size_t n_triangles = surface.triangles.size();
   for (const auto& o : obstacles) n_triangles += o.mesh.triangles.size();
 
+  // Graded lattice points around the surface and the obstacles (outside_lattice.h), after the
+  // box corners, from TetSettings::lattice × the padding away.
+  std::vector<Eigen::Vector3d> lattice;
+  if (s.lattice > 0) {
+    std::vector<const TriMesh*> meshes{&surface};
+    for (const auto& o : obstacles) meshes.push_back(&o.mesh);
+    lattice = outside_lattice(meshes, lo, hi, s.lattice * pad);
+  }
+
   tetgenio in, out;
-  in.numberofpoints = int(n_all + 8);
-  in.pointlist = tetgen_array<REAL>(3 * (n_all + 8));
+  in.numberofpoints = int(n_all + 8 + lattice.size());
+  in.pointlist = tetgen_array<REAL>(3 * (n_all + 8 + lattice.size()));
   auto set_point = [&](size_t i, const Eigen::Vector3d& p) {
     for (int k = 0; k < 3; ++k) in.pointlist[3 * i + size_t(k)] = p[k];
   };
@@ -215,6 +225,7 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
     for (size_t i = 0; i < obstacles[k].mesh.positions.size(); ++i) set_point(first[k] + i, obstacles[k].mesh.positions[i]);
   for (int c = 0; c < 8; ++c)
     set_point(n_all + size_t(c), Eigen::Vector3d((c & 1) ? hi.x() : lo.x(), (c & 2) ? hi.y() : lo.y(), (c & 4) ? hi.z() : lo.z()));
+  for (size_t i = 0; i < lattice.size(); ++i) set_point(n_all + 8 + i, lattice[i]);
   const int box[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   in.numberoffacets = int(n_triangles + 6);
   in.facetlist = tetgen_array<tetgenio::facet>(size_t(in.numberoffacets));

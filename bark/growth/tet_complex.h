@@ -29,6 +29,9 @@ struct TetSettings {
   double padding = 0.5;
   double quality = 1.5;          // TetGen's radius-edge bound (switch q)
   double max_volume = 0;         // m³ per tetrahedron (switch a; 0: none)
+  // Steiner points TetGen starts from (outside_lattice.h): graded lattices from `lattice` ×
+  // the padding away from the surface, which make its set-up near linear (0: none).
+  double lattice = 0;
 };
 
 struct TetComplex {

@@ -4,6 +4,7 @@
 // refused with the object's path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -41,6 +42,31 @@ TEST(TetComplex, TheInterfaceIsTheInputSurfaceAndEveryTetrahedronIsPositive) {
   EXPECT_NEAR(c.volume(1), enclosed, 1e-9);
   EXPECT_NEAR(c.volume(0) + c.volume(1), 2.0 * 2.0 * 2.0, 1e-9);  // the box: 1 m padded by 0.5 on every side
   EXPECT_GT(std::count(c.on_box.begin(), c.on_box.end(), 1), 7);
+}
+
+TEST(TetComplex, AGradedLatticeAddsOnlyFreePointsAwayFromTheSurface) {
+  const TriMesh sphere = icosphere(3, 0.5);
+  TetSettings graded;
+  graded.lattice = 0.5;  // from 0.25 m (half the 0.5 m padding) out
+  const TetComplex plain = tetrahedralize_surface(sphere, TetSettings{}, "scene.json", "/objects/0");
+  const TetComplex c = tetrahedralize_surface(sphere, graded, "scene.json", "/objects/0");
+  EXPECT_EQ(c.first_inverted(), -1);
+  auto canonical = [](std::vector<std::array<uint32_t, 3>> faces) {  // each from its smallest index, sorted
+    for (auto& f : faces)
+      while (f[0] > f[1] || f[0] > f[2]) f = {f[1], f[2], f[0]};
+    std::sort(faces.begin(), faces.end());
+    return faces;
+  };
+  EXPECT_EQ(canonical(c.interface_faces()), canonical(plain.interface_faces()));  // the same surface and indices
+  EXPECT_GT(c.points.size(), plain.points.size());
+  for (size_t i = 0; i < sphere.positions.size(); ++i) EXPECT_EQ(c.points[i], sphere.positions[i]);
+  EXPECT_NEAR(c.volume(0) + c.volume(1), 2.0 * 2.0 * 2.0, 1e-9);
+  // The points after the input's and the box's 8 corners (the lattice's, then TetGen's) are
+  // free: off the surface and off the box (switch Y adds none on facets).
+  for (size_t i = sphere.positions.size() + 8; i < c.points.size(); ++i) {
+    EXPECT_EQ(c.on_interface[i], 0) << i;
+    EXPECT_EQ(c.on_box[i], 0) << i;
+  }
 }
 
 TEST(TetComplex, TwoComponentsAreBothInside) {
