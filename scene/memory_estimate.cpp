@@ -269,7 +269,7 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
     // The shapes make about the number of triangles asked for; the area from a coarse copy.
     n_in = double(std::max(20, o.procedural->triangles));
     ObjectDesc coarse = o;
-    coarse.procedural->triangles = std::min(o.procedural->triangles, 2000);
+    coarse.procedural = coarse_procedural(*o.procedural, 2000);
     area = trimesh_area(object_trimesh(coarse));
     m.where = path(oi, "/procedural/triangles");
     m.advice = "lower triangles (now " + std::to_string(o.procedural->triangles) + ")";
@@ -307,7 +307,7 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
 // dicing follows the target edge, not the input's), and at least one per input triangle.
 double displaced_mesh_triangles(const ObjectDesc& o, double triangles, const DicingParams& d) {
   ObjectDesc copy = o;
-  if (copy.procedural) copy.procedural->triangles = std::min(copy.procedural->triangles, 20000);
+  if (copy.procedural) copy.procedural = coarse_procedural(*copy.procedural, 20000);
   MeshData m = to_mesh_data(object_trimesh(copy));
   compute_vertex_normals(m);
   return std::max(triangles, double(estimate_triangles(m, make_displacement(o.displacement), d)));
@@ -372,7 +372,7 @@ MemoryItem growth_item(const ObjectDesc& o, size_t oi) {
   double n_in = 0, area = 0, edge = 0;
   if (o.procedural) {
     ObjectDesc coarse = o;
-    coarse.procedural->triangles = std::min(o.procedural->triangles, 2000);
+    coarse.procedural = coarse_procedural(*o.procedural, 2000);
     const bark::TriMesh t = object_trimesh(coarse);
     area = trimesh_area(t);
     n_in = double(std::max(20, o.procedural->triangles)) / 2;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "bark/geometry/branch_junction.h"
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/geometry/tube_junctions.h"
 #include "io/mesh_io.h"
@@ -13,9 +14,32 @@
 
 namespace phellem {
 
+bark::BranchJunctionParams branch_junction_params(const ProceduralMeshDesc& p) {
+  bark::BranchJunctionParams b;
+  b.radius = p.radius;
+  b.height = p.height;
+  b.branch_radius = p.branch_radius > 0 ? double(p.branch_radius) : 0.6 * double(p.radius);
+  b.branch_length = p.branch_length > 0 ? double(p.branch_length) : 4.0 * double(p.radius);
+  b.branch_angle_deg = p.branch_angle_deg;
+  b.branch_height = p.branch_height;
+  b.triangles = p.triangles;
+  b.jitter = p.jitter;
+  b.seed = p.seed;
+  return b;
+}
+
+ProceduralMeshDesc coarse_procedural(const ProceduralMeshDesc& p, int at_most) {
+  ProceduralMeshDesc c = p;
+  c.triangles = std::min(p.triangles, at_most);
+  if (p.shape == "branch_junction")
+    c.triangles = std::max(c.triangles, std::min(p.triangles, bark::branch_junction_least_triangles(branch_junction_params(p))));
+  return c;
+}
+
 bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
   const uint64_t seed = p.seed;
   const double n = std::max(20, p.triangles);
+  if (p.shape == "branch_junction") return bark::branch_junction_mesh(branch_junction_params(p));
   if (p.shape == "trunk" || p.shape == "vase" || p.shape == "log") {
     // Quads about square: along / around ≈ height / circumference.
     const double aspect = p.height / (2 * double(kPi) * p.radius);

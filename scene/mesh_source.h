@@ -3,6 +3,7 @@
 // object's transform applied) or made from its procedural description.
 #pragma once
 
+#include "bark/geometry/branch_junction.h"
 #include "bark/geometry/mesh_data.h"
 #include "bark/geometry/tri_mesh.h"
 #include "scene/scene_desc.h"
@@ -12,6 +13,11 @@ namespace phellem {
 // Errors in the file are UserErrors naming it.
 bark::TriMesh object_trimesh(const ObjectDesc& o);
 bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p);
+// A copy with at most `at_most` triangles (for estimates from a coarse mesh), but never fewer
+// than the shape accepts (a branch junction's least).
+ProceduralMeshDesc coarse_procedural(const ProceduralMeshDesc& p, int at_most);
+// A `branch_junction`'s parameters, its defaults relative to the trunk resolved.
+bark::BranchJunctionParams branch_junction_params(const ProceduralMeshDesc& p);
 
 // Positions, UVs and triangles (no normals).
 MeshData to_mesh_data(const bark::TriMesh& t);
