@@ -65,16 +65,25 @@ bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
   return bark::torus_knot(2, 3, p.radius, p.tube, segments, sides);
 }
 
+DicingParams tree_mesh_dicing(const ObjectDesc& o) {
+  DicingParams d;
+  d.screen_space = false;
+  if (o.stress_bark && o.stress_bark->preprocess.edge_length > 0)
+    d.target = o.stress_bark->preprocess.edge_length;
+  else if (o.growth && o.growth->settings.edge_max > 0)
+    d.target = o.growth->settings.edge_max / 1.5;  // the band's default maximum is 1.5 × the input's mean edge
+  else
+    d.target = 2 * double(kPi) * o.tree.radius.front() / 100;
+  return d;
+}
+
 bark::TriMesh object_trimesh(const ObjectDesc& o) {
   bark::TriMesh t;
   if (o.type == ObjectType::Tree) {
-    // The trunk and branches (with the tree's own displacement), each diced in object space to
-    // edges of the preprocessing length (default: a hundredth of the trunk's circumference).
+    // The trunk and branches (with the tree's own displacement), each diced in object space
+    // (tree_mesh_dicing).
     const std::vector<TreePart> parts = build_tree(o.tree, make_displacement(o.tree.displacement));
-    DicingParams d;
-    d.screen_space = false;
-    d.target = o.stress_bark && o.stress_bark->preprocess.edge_length > 0 ? o.stress_bark->preprocess.edge_length
-                                                                          : 2 * double(kPi) * o.tree.radius.front() / 100;
+    const DicingParams d = tree_mesh_dicing(o);
     long long estimate = 0;
     for (const TreePart& part : parts) estimate += estimate_triangles(part.surface, d);
     if (estimate > 20'000'000)
@@ -97,6 +106,10 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
       parent.push_back(part.parent);
     }
     bark::JoinedTubes joined = bark::join_tubes(tubes, parent);
+    // A growing tree must be one closed surface: a branch kept apart would overlap its parent.
+    if (o.growth && !joined.not_joined.empty())
+      throw UserError(o.where.file, o.where.path + "/branches",
+                      joined.not_joined.front() + "; a growing tree needs every branch joined to its parent");
     for (const std::string& why : joined.not_joined)
       std::fprintf(stderr, "phellem: warning: %s: %s: %s; cracks stop at that junction\n", o.where.file.c_str(),
                    o.where.path.c_str(), why.c_str());

@@ -478,6 +478,14 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
     d.tree = parse_tree(c, o, scene.render.seed, &d.stress_bark);
+    // A growing tree grows its trunk and branches joined into one closed surface (mesh_source.h).
+    if (auto g = o.get("growth")) {
+      if (d.tree.strip_bark)
+        g->fail(
+            "a growing tree takes stress bark (\"model\": \"stress\") or none; the strip model's bark lives on the "
+            "tree's cylinders, which do not grow");
+      d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object(), c.base_dir.string()));
+    }
   } else {
     o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, mesh, tree");
   }

@@ -14,8 +14,11 @@
 
 #include "bark/geometry/branch_junction.h"
 #include "bark/growth/cambial_growth.h"
+#include "tests/support/closed_surface.h"
 
 using namespace phellem::bark;
+using phellem::test::manifold_problem;
+using phellem::test::signed_volume;
 
 namespace {
 
@@ -33,55 +36,6 @@ BranchJunctionParams small_junction(double angle_deg = 45, int triangles = 3000)
   p.jitter = 0.3;
   p.seed = 5;
   return p;
-}
-
-// The mesh's triangles over its vertices welded by position.
-std::vector<std::array<uint32_t, 3>> welded_triangles(const TriMesh& m, size_t* vertices = nullptr) {
-  std::map<std::array<double, 3>, uint32_t> at;
-  std::vector<uint32_t> id(m.positions.size());
-  for (size_t i = 0; i < m.positions.size(); ++i)
-    id[i] = at.emplace(std::array<double, 3>{m.positions[i].x(), m.positions[i].y(), m.positions[i].z()}, uint32_t(at.size()))
-                .first->second;
-  std::vector<std::array<uint32_t, 3>> out;
-  for (const auto& t : m.triangles) out.push_back({id[t[0]], id[t[1]], id[t[2]]});
-  if (vertices) *vertices = at.size();
-  return out;
-}
-
-double signed_volume(const TriMesh& m) {
-  double volume = 0;
-  for (const auto& t : m.triangles) volume += m.positions[t[0]].dot(m.positions[t[1]].cross(m.positions[t[2]])) / 6;
-  return volume;
-}
-
-// Closed and a 2-manifold: every directed edge once and its reverse once (edges), and the
-// triangles around each vertex one fan (no pinched vertices). Returns what is wrong, or "".
-std::string manifold_problem(const TriMesh& m) {
-  size_t n = 0;
-  const auto tris = welded_triangles(m, &n);
-  std::map<std::pair<uint32_t, uint32_t>, int> directed;
-  for (const auto& t : tris) {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return "a triangle repeats a vertex";
-    for (size_t e = 0; e < 3; ++e) ++directed[{t[e], t[(e + 1) % 3]}];
-  }
-  for (const auto& [e, count] : directed)
-    if (count != 1 || directed.count({e.second, e.first}) != 1)
-      return "edge " + std::to_string(e.first) + "-" + std::to_string(e.second) + " is not shared by exactly two triangles";
-  // Around each vertex: the next corner after it in each triangle, linked to the one before.
-  std::vector<std::map<uint32_t, uint32_t>> link(n);
-  for (const auto& t : tris)
-    for (size_t k = 0; k < 3; ++k) link[t[k]][t[(k + 1) % 3]] = t[(k + 2) % 3];
-  for (size_t v = 0; v < n; ++v) {
-    if (link[v].empty()) continue;
-    size_t steps = 0;
-    uint32_t at = link[v].begin()->first;
-    do {
-      at = link[v].at(at);
-      ++steps;
-    } while (at != link[v].begin()->first && steps <= link[v].size());
-    if (steps != link[v].size()) return "vertex " + std::to_string(v) + " is pinched (several fans)";
-  }
-  return "";
 }
 
 }  // namespace
