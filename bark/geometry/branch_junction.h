@@ -2,8 +2,12 @@
 // `height`) with one branch (a thinner capped cylinder) leaving it at an angle, the boolean
 // union of the two (CGAL's corefinement), remeshed isotropically to about the requested
 // triangle count (CGAL's isotropic remeshing, the end-cap rims and the junction crease kept
-// as features). A closed, outward-oriented 2-manifold once its UV seam copies are welded by
-// position, so it can grow (bark/growth/) like a log. Units metres, +Y up.
+// as features; within about 10 % of the count from a few thousand triangles up), its side
+// vertices moved out onto the round cylinders and the crease rounded into a small fillet (a
+// few edges wide) as wood fills a crotch. A closed, outward-oriented 2-manifold once its UV
+// seam copies are welded by position, so it can grow (bark/growth/) like a log. Units metres,
+// +Y up. Deterministic: the same parameters give the same mesh (corefinement's output is
+// renumbered in order of position first).
 //
 //   radius, height           the trunk (m)
 //   branch_radius            the branch (m), less than the trunk's
