@@ -111,8 +111,14 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
         add_mesh(plane_mesh(o), mat, object_id);
         break;
       case ObjectType::Tree: {
-        if (o.stress_bark) {
+        if (o.stress_bark && !(o.growth && !o.growth->cracks)) {
           c.jobs.push_back(stress_job(desc, o, *bark_of(bark, oi, o).cracked, mat, object_id));
+          break;
+        }
+        if (o.growth) {  // the joined surface of its trunk and branches at the last step (world space)
+          MeshData w = to_mesh_data(*bark_of(bark, oi, o).grown);
+          compute_vertex_normals(w);
+          add_mesh(std::move(w), mat, object_id);
           break;
         }
         const DisplacementFn disp = make_displacement(o.tree.displacement);

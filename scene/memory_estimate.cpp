@@ -238,14 +238,6 @@ LoadedCounts file_counts(const ObjectDesc& o) {
 }
 
 // Object-space dicing of a tree for the stress model (mesh_source.cpp, object_trimesh).
-DicingParams stress_tree_dicing(const ObjectDesc& o) {
-  DicingParams d;
-  d.screen_space = false;
-  d.target = o.stress_bark->preprocess.edge_length > 0 ? o.stress_bark->preprocess.edge_length
-                                                       : 2 * double(kPi) * o.tree.radius.front() / 100;
-  return d;
-}
-
 struct StressCost {
   double triangles = 0;  // the mesh the cracker works on (after preprocessing, with its cracks)
   MemoryItem item;
@@ -257,7 +249,7 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
   MemoryItem m;
   m.file = o.where.file;
   if (o.type == ObjectType::Tree) {
-    const DicingParams d = stress_tree_dicing(o);
+    const DicingParams d = tree_mesh_dicing(o);
     for (const TreePart& part : build_tree(o.tree, make_displacement(o.tree.displacement))) {
       n_in += double(estimate_triangles(part.surface, d));
       area += mean_circumference(*part.cylinder) * part.cylinder->length();
@@ -269,7 +261,7 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
     // The shapes make about the number of triangles asked for; the area from a coarse copy.
     n_in = double(std::max(20, o.procedural->triangles));
     ObjectDesc coarse = o;
-    coarse.procedural->triangles = std::min(o.procedural->triangles, 2000);
+    coarse.procedural = coarse_procedural(*o.procedural, 2000);
     area = trimesh_area(object_trimesh(coarse));
     m.where = path(oi, "/procedural/triangles");
     m.advice = "lower triangles (now " + std::to_string(o.procedural->triangles) + ")";
@@ -307,7 +299,7 @@ StressCost stress_cost(const ObjectDesc& o, size_t oi) {
 // dicing follows the target edge, not the input's), and at least one per input triangle.
 double displaced_mesh_triangles(const ObjectDesc& o, double triangles, const DicingParams& d) {
   ObjectDesc copy = o;
-  if (copy.procedural) copy.procedural->triangles = std::min(copy.procedural->triangles, 20000);
+  if (copy.procedural) copy.procedural = coarse_procedural(*copy.procedural, 20000);
   MeshData m = to_mesh_data(object_trimesh(copy));
   compute_vertex_normals(m);
   return std::max(triangles, double(estimate_triangles(m, make_displacement(o.displacement), d)));
@@ -370,9 +362,15 @@ MemoryItem base_item() { return {"the program itself", kBaseBytes, "", "", ""}; 
 // Cambial growth: the tetrahedral complex at the last step, from the input's size and area.
 MemoryItem growth_item(const ObjectDesc& o, size_t oi) {
   double n_in = 0, area = 0, edge = 0;
-  if (o.procedural) {
+  if (o.type == ObjectType::Tree) {
+    const DicingParams d = tree_mesh_dicing(o);
+    for (const TreePart& part : build_tree(o.tree, make_displacement(o.tree.displacement))) {
+      n_in += double(estimate_triangles(part.surface, d)) / 2;
+      area += mean_circumference(*part.cylinder) * part.cylinder->length();
+    }
+  } else if (o.procedural) {
     ObjectDesc coarse = o;
-    coarse.procedural->triangles = std::min(o.procedural->triangles, 2000);
+    coarse.procedural = coarse_procedural(*o.procedural, 2000);
     const bark::TriMesh t = object_trimesh(coarse);
     area = trimesh_area(t);
     n_in = double(std::max(20, o.procedural->triangles)) / 2;
@@ -385,7 +383,8 @@ MemoryItem growth_item(const ObjectDesc& o, size_t oi) {
   MemoryItem m;
   m.file = o.where.file;
   m.bytes = estimate_growth_bytes(*o.growth, size_t(n_in), area, edge);
-  m.what = "the cambial growth of " + object_name(o, oi, "mesh") + " (its tetrahedra at the last step)";
+  m.what = "the cambial growth of " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh") +
+           " (its tetrahedra at the last step)";
   m.where = path(oi, "/growth/edge_length");
   m.advice = "raise the growth's edge_length band, or lower its thickness or steps / ring_interval";
   return m;
@@ -439,7 +438,9 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
     }
     for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
       const ObjectDesc& o = desc.objects[oi];
-      if (o.growth) e.moments.push_back({"growing " + object_name(o, oi, "mesh"), {base_item(), growth_item(o, oi)}});
+      if (o.growth)
+        e.moments.push_back(
+            {"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item(), growth_item(o, oi)}});
       if (!o.stress_bark) continue;
       e.moments.push_back({"cracking " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"),
                            {base_item(), stress_cost(o, oi).item}});
@@ -478,7 +479,7 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
       surfaces.push_back(kept);
     }
     if (o.growth) {
-      MemoryMoment m{"growing " + object_name(o, oi, "mesh"), {base_item()}};
+      MemoryMoment m{"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item()}};
       m.items.insert(m.items.end(), surfaces.begin(), surfaces.end());
       m.items.push_back(growth_item(o, oi));
       e.moments.push_back(std::move(m));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "bark/geometry/branch_junction.h"
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/geometry/tube_junctions.h"
 #include "io/mesh_io.h"
@@ -13,9 +14,32 @@
 
 namespace phellem {
 
+bark::BranchJunctionParams branch_junction_params(const ProceduralMeshDesc& p) {
+  bark::BranchJunctionParams b;
+  b.radius = p.radius;
+  b.height = p.height;
+  b.branch_radius = p.branch_radius > 0 ? double(p.branch_radius) : 0.6 * double(p.radius);
+  b.branch_length = p.branch_length > 0 ? double(p.branch_length) : 4.0 * double(p.radius);
+  b.branch_angle_deg = p.branch_angle_deg;
+  b.branch_height = p.branch_height;
+  b.triangles = p.triangles;
+  b.jitter = p.jitter;
+  b.seed = p.seed;
+  return b;
+}
+
+ProceduralMeshDesc coarse_procedural(const ProceduralMeshDesc& p, int at_most) {
+  ProceduralMeshDesc c = p;
+  c.triangles = std::min(p.triangles, at_most);
+  if (p.shape == "branch_junction")
+    c.triangles = std::max(c.triangles, std::min(p.triangles, bark::branch_junction_least_triangles(branch_junction_params(p))));
+  return c;
+}
+
 bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
   const uint64_t seed = p.seed;
   const double n = std::max(20, p.triangles);
+  if (p.shape == "branch_junction") return bark::branch_junction_mesh(branch_junction_params(p));
   if (p.shape == "trunk" || p.shape == "vase" || p.shape == "log") {
     // Quads about square: along / around ≈ height / circumference.
     const double aspect = p.height / (2 * double(kPi) * p.radius);
@@ -41,16 +65,25 @@ bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p) {
   return bark::torus_knot(2, 3, p.radius, p.tube, segments, sides);
 }
 
+DicingParams tree_mesh_dicing(const ObjectDesc& o) {
+  DicingParams d;
+  d.screen_space = false;
+  if (o.stress_bark && o.stress_bark->preprocess.edge_length > 0)
+    d.target = o.stress_bark->preprocess.edge_length;
+  else if (o.growth && o.growth->settings.edge_max > 0)
+    d.target = o.growth->settings.edge_max / 1.5;  // the band's default maximum is 1.5 × the input's mean edge
+  else
+    d.target = 2 * double(kPi) * o.tree.radius.front() / 100;
+  return d;
+}
+
 bark::TriMesh object_trimesh(const ObjectDesc& o) {
   bark::TriMesh t;
   if (o.type == ObjectType::Tree) {
-    // The trunk and branches (with the tree's own displacement), each diced in object space to
-    // edges of the preprocessing length (default: a hundredth of the trunk's circumference).
+    // The trunk and branches (with the tree's own displacement), each diced in object space
+    // (tree_mesh_dicing).
     const std::vector<TreePart> parts = build_tree(o.tree, make_displacement(o.tree.displacement));
-    DicingParams d;
-    d.screen_space = false;
-    d.target = o.stress_bark && o.stress_bark->preprocess.edge_length > 0 ? o.stress_bark->preprocess.edge_length
-                                                                          : 2 * double(kPi) * o.tree.radius.front() / 100;
+    const DicingParams d = tree_mesh_dicing(o);
     long long estimate = 0;
     for (const TreePart& part : parts) estimate += estimate_triangles(part.surface, d);
     if (estimate > 20'000'000)
@@ -73,6 +106,10 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
       parent.push_back(part.parent);
     }
     bark::JoinedTubes joined = bark::join_tubes(tubes, parent);
+    // A growing tree must be one closed surface: a branch kept apart would overlap its parent.
+    if (o.growth && !joined.not_joined.empty())
+      throw UserError(o.where.file, o.where.path + "/branches",
+                      joined.not_joined.front() + "; a growing tree needs every branch joined to its parent");
     for (const std::string& why : joined.not_joined)
       std::fprintf(stderr, "phellem: warning: %s: %s: %s; cracks stop at that junction\n", o.where.file.c_str(),
                    o.where.path.c_str(), why.c_str());

@@ -3,15 +3,28 @@
 // object's transform applied) or made from its procedural description.
 #pragma once
 
+#include "bark/geometry/branch_junction.h"
 #include "bark/geometry/mesh_data.h"
+#include "bark/geometry/tessellation.h"
 #include "bark/geometry/tri_mesh.h"
 #include "scene/scene_desc.h"
 
 namespace phellem {
 
-// Errors in the file are UserErrors naming it.
+// Errors in the file are UserErrors naming it. A tree is its trunk and branches, each diced
+// (tree_mesh_dicing) and joined at the branchings, with flat caps on the open ends: one closed
+// surface (bark/geometry/tube_junctions.h), which a growing tree requires of every branch.
 bark::TriMesh object_trimesh(const ObjectDesc& o);
+// The object-space dicing of a tree's parts for object_trimesh: the stress bark's preprocess
+// edge_length when set, else with growth the growth's edge_length band's maximum / 1.5, else a
+// hundredth of the trunk's circumference.
+DicingParams tree_mesh_dicing(const ObjectDesc& o);
 bark::TriMesh procedural_trimesh(const ProceduralMeshDesc& p);
+// A copy with at most `at_most` triangles (for estimates from a coarse mesh), but never fewer
+// than the shape accepts (a branch junction's least).
+ProceduralMeshDesc coarse_procedural(const ProceduralMeshDesc& p, int at_most);
+// A `branch_junction`'s parameters, its defaults relative to the trunk resolved.
+bark::BranchJunctionParams branch_junction_params(const ProceduralMeshDesc& p);
 
 // Positions, UVs and triangles (no normals).
 MeshData to_mesh_data(const bark::TriMesh& t);

@@ -61,7 +61,7 @@ struct LightDesc {
   std::string file;  // environment map (resolved path)
   float intensity = 1.0f;
   float rotation_deg = 0.0f;
-  float clamp = 0.0f;  // environment map: luminance clamped to this (0 = off), e.g. a sun disk given as a `sun`
+  float clamp = 0.0f;        // environment map: luminance clamped to this (0 = off), e.g. a sun disk given as a `sun`
   Vec3f direction{0, 1, 0};  // sun / sky: towards the sun (normalized)
   bool has_direction = false;
   float irradiance = 1.0f;             // sun: irradiance on a surface facing it
@@ -106,16 +106,21 @@ struct TreeDesc {
 };
 
 // A mesh made by Phellem instead of read from a file (bark/geometry/procedural_meshes.h):
-// `"procedural": {"shape": "trunk" | "log" | "torus_knot" | "vase" | "sheet" | "sphere", ...}`
-// (a log is a trunk closed by flat end caps, a closed surface that can grow).
+// `"procedural": {"shape": "trunk" | "log" | "torus_knot" | "vase" | "sheet" | "sphere" |
+// "branch_junction", ...}` (a log is a trunk closed by flat end caps, a closed surface that can
+// grow; a branch junction is a log with a branch, bark/geometry/branch_junction.h).
 struct ProceduralMeshDesc {
   std::string shape;
   int triangles = 8000;  // approximate
-  float radius = 0.15f;  // trunk, log, vase (base), torus knot (overall), sphere
-  float height = 1.0f;   // trunk, log, vase, sheet (and its width)
+  float radius = 0.15f;  // trunk, log, vase (base), torus knot (overall), sphere, branch junction's trunk
+  float height = 1.0f;   // trunk, log, vase, sheet (and its width), branch junction's trunk
   float tube = 0.06f;    // torus knot
-  float jitter = 0.3f;   // trunk, vase, sheet: vertex jitter (fraction of the spacing)
+  float jitter = 0.3f;   // trunk, vase, sheet, branch junction: vertex jitter (fraction of the spacing)
   uint64_t seed = 1;     // of the jitter
+  // branch junction: 0 for the branch's radius and length means 0.6 × and 4 × radius
+  float branch_radius = 0, branch_length = 0;
+  float branch_angle_deg = 50;  // from the trunk's axis
+  float branch_height = 0.45f;  // where the branch's axis leaves the trunk's (fraction of height)
 };
 
 enum class ObjectType { Sphere, Plane, Mesh, Tree };

@@ -9,6 +9,7 @@
 
 #include "io/builtin_files.h"
 #include "scene/json_reader.h"
+#include "scene/mesh_source.h"
 
 namespace phellem {
 
@@ -365,8 +366,9 @@ ProceduralMeshDesc parse_procedural(JsonObject o) {
   ProceduralMeshDesc p;
   p.shape = o.string("shape");
   if (p.shape != "trunk" && p.shape != "log" && p.shape != "torus_knot" && p.shape != "vase" && p.shape != "sheet" &&
-      p.shape != "sphere")
-    o.fail("shape", "unknown procedural shape \"" + p.shape + "\"; allowed: trunk, log, torus_knot, vase, sheet, sphere");
+      p.shape != "sphere" && p.shape != "branch_junction")
+    o.fail("shape",
+           "unknown procedural shape \"" + p.shape + "\"; allowed: trunk, log, torus_knot, vase, sheet, sphere, branch_junction");
   if (auto v = o.get("triangles")) {
     p.triangles = v->integer();
     if (p.triangles < 20 || p.triangles > 20000000) v->fail("triangles must be an integer in [20, 20000000]");
@@ -379,7 +381,20 @@ ProceduralMeshDesc parse_procedural(JsonObject o) {
     if (p.jitter > 0.45f) v->fail("jitter must lie in [0, 0.45] (fraction of the vertex spacing)");
   }
   if (auto v = o.get("seed")) p.seed = v->seed();
+  const bool junction = p.shape == "branch_junction";
+  for (const char* key : {"branch_radius", "branch_length", "branch_angle_deg", "branch_height"})
+    if (!junction && o.has(key)) o.fail(key, std::string(key) + " belongs to the shape branch_junction only");
+  if (auto v = o.get("branch_radius")) p.branch_radius = v->positive();
+  if (auto v = o.get("branch_length")) p.branch_length = v->positive();
+  if (auto v = o.get("branch_angle_deg")) p.branch_angle_deg = v->number();
+  if (auto v = o.get("branch_height")) p.branch_height = v->number();
   o.finish();
+  // A junction's parameters bound each other (the branch must leave through the trunk's
+  // side): the problem is reported at the parameter to change, or at the block when it was
+  // left at its default.
+  if (junction)
+    if (const auto problem = bark::check_branch_junction(branch_junction_params(p)))
+      o.fail(o.has(problem->parameter) ? problem->parameter : "", problem->what);
   return p;
 }
 
@@ -463,6 +478,14 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
     d.tree = parse_tree(c, o, scene.render.seed, &d.stress_bark);
+    // A growing tree grows its trunk and branches joined into one closed surface (mesh_source.h).
+    if (auto g = o.get("growth")) {
+      if (d.tree.strip_bark)
+        g->fail(
+            "a growing tree takes stress bark (\"model\": \"stress\") or none; the strip model's bark lives on the "
+            "tree's cylinders, which do not grow");
+      d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object(), c.base_dir.string()));
+    }
   } else {
     o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, mesh, tree");
   }
@@ -493,7 +516,8 @@ void resolve_growth_obstacles(SceneDesc& s) {
         names += (names.empty() ? "" : ", ") + s.objects[j].name;
       }
       if (found < 0)
-        throw UserError(s.file, where, "no object named \"" + name + "\" (named objects: " + (names.empty() ? "none" : names) + ")");
+        throw UserError(s.file, where,
+                        "no object named \"" + name + "\" (named objects: " + (names.empty() ? "none" : names) + ")");
       const ObjectDesc& ob = s.objects[size_t(found)];
       if (size_t(found) == oi) throw UserError(s.file, where, "an object cannot be its own obstacle");
       if (ob.type != ObjectType::Mesh && ob.type != ObjectType::Sphere)
