@@ -61,7 +61,12 @@ GrowthCracks::GrowthCracks(StressParams params, CrackCouplingSettings settings)
     throw std::invalid_argument("GrowthCracks: iterations_per_step >= 0 and a finite stretch_stress >= 0");
 }
 
-void GrowthCracks::follow_splits(const TetComplex& c, const std::set<std::pair<uint32_t, uint32_t>>& interface_edges) {
+void GrowthCracks::follow_splits(const TetComplex& c, const std::set<std::pair<uint32_t, uint32_t>>& interface_edges,
+                                 const std::map<uint32_t, uint32_t>& merged) {
+  auto survivor = [&](uint32_t q) {
+    for (auto it = merged.find(q); it != merged.end(); it = merged.find(q)) q = it->second;
+    return q;
+  };
   // The points added since the last step, by the edge they split.
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> child;
   for (size_t p = points_seen_; p < c.parents.size(); ++p)
@@ -74,8 +79,9 @@ void GrowthCracks::follow_splits(const TetComplex& c, const std::set<std::pair<u
     if (interface_edges.count(e)) {
       now.insert(e);
     } else if (const auto it = child.find(e); it != child.end()) {
-      todo.push_back(edge_key(e.first, it->second));
-      todo.push_back(edge_key(it->second, e.second));
+      const uint32_t m = survivor(it->second);  // a cap's split point merged into the cap vertex
+      if (m != e.first) todo.push_back(edge_key(e.first, m));
+      if (m != e.second) todo.push_back(edge_key(m, e.second));
     } else {
       ++stats_.edges_lost;  // neither an edge nor split: nothing removes a crack edge, so never expected
     }
@@ -87,7 +93,12 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
   const auto t0 = Clock::now();
   const std::string at_step = " (crack coupling, growth step " + std::to_string(stats_.steps) + ")";
   // Lagging vertices flatten triangles into caps, which the stress mesh cannot take.
-  if (!c.on_crack.empty()) stats_.caps_removed += remove_interface_caps(c, adj, kMaxCapAngle).removed;
+  std::map<uint32_t, uint32_t> merged;
+  if (!c.on_crack.empty()) {
+    const CapStats caps = remove_interface_caps(c, adj, kMaxCapAngle);
+    stats_.caps_removed += caps.removed;
+    merged.insert(caps.merged.begin(), caps.merged.end());
+  }
   // The interface as the stress mesh: vertex k of the stress mesh is point surface.point[k]
   // (extract_interface lists each point once, and distinct points never share a position).
   const GrowthSurface surface = extract_interface(c);
@@ -95,7 +106,7 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
   for (const auto& t : surface.mesh.triangles)
     for (int e = 0; e < 3; ++e)
       interface_edges.insert(edge_key(surface.point[t[size_t(e)]], surface.point[t[size_t(e + 1) % 3]]));
-  follow_splits(c, interface_edges);
+  follow_splits(c, interface_edges, merged);
 
   std::optional<StressMesh> mesh;
   try {

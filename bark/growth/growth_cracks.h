@@ -22,6 +22,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -83,7 +84,8 @@ class GrowthCracks {
   double absolute_threshold() const { return tau_; }
 
  private:
-  void follow_splits(const TetComplex& c, const std::set<std::pair<uint32_t, uint32_t>>& interface_edges);
+  void follow_splits(const TetComplex& c, const std::set<std::pair<uint32_t, uint32_t>>& interface_edges,
+                     const std::map<uint32_t, uint32_t>& merged);
 
   StressParams params_;
   CrackCouplingSettings settings_;

@@ -44,20 +44,23 @@ CapStats remove_interface_caps(TetComplex& c, TetAdjacency& adj, double max_angl
       if (pass == 0) ++st.found;
       const uint32_t p = f[size_t(k)], a = f[size_t(k + 1) % 3], b = f[size_t(k + 2) % 3];
       if (c.on_box[a] || c.on_box[b]) continue;
-      if (!c.on_crack.empty() && c.on_crack[a] && c.on_crack[b]) continue;  // a–b may be a crack edge: keep it whole
       const Eigen::Vector3d ab = c.points[b] - c.points[a];
       const double t = std::clamp((c.points[p] - c.points[a]).dot(ab) / ab.squaredNorm(), 0.05, 0.95);
       const Eigen::Vector3d x = (1 - t) * c.points[a] + t * c.points[b];
       adj.edge_tets(c, a, b, shared);
       if (!split_keeps_positive(c, a, b, x, shared)) continue;
       const uint32_t m = c.add_point_between(a, b, t);
-      if (!c.on_crack.empty()) c.on_crack[m] = 0;  // the crack (if any) is the coupling's to follow
+      if (!c.on_crack.empty()) c.on_crack[m] = 0;  // may merge into p even when a–b is a crack edge
       adj.split_edge_tets(c, a, b, m, shared);
       touched.resize(c.points.size(), 0);
       touched[a] = touched[b] = touched[p] = touched[m] = 1;
       if (collapse_interface_edge(c, adj, m, p)) {
         ++removed;
         ++st.removed;
+        if (c.on_interface[m])
+          st.merged.emplace_back(p, m);
+        else
+          st.merged.emplace_back(m, p);
       }
     }
     if (removed == 0) break;

@@ -7,6 +7,9 @@
 // vertex keeps its place (it may lie on a crack), the two triangles become one edge.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "bark/growth/tet_adjacency.h"
 
 namespace phellem::bark {
@@ -14,11 +17,15 @@ namespace phellem::bark {
 struct CapStats {
   long found = 0;    // interface triangles with an angle above the bound
   long removed = 0;  // split and collapsed
+  // (gone, survivor) of each collapse: a crack edge a–b that a cap split follows its split
+  // point into the survivor (crack coupling).
+  std::vector<std::pair<uint32_t, uint32_t>> merged;
 };
 
 // Removes interface caps with an angle above `max_angle` (radians), each split kept only when
-// every tetrahedron around the edge stays positive (exact predicate), and none whose long edge
-// joins two crack points (it may be a crack edge). Deterministic.
+// every tetrahedron around the edge stays positive (exact predicate). A point on a crack stays
+// where it is (interface_coarsening.h); the split point, on a crack edge or not, merges into
+// it. Deterministic.
 CapStats remove_interface_caps(TetComplex& c, TetAdjacency& adj, double max_angle);
 
 }  // namespace phellem::bark
