@@ -230,6 +230,7 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
 
   // What the next step starts from: crack edges and widths by point, stress by face.
   const StressMesh& sm = cracker->mesh();
+  point_of.resize(cg.number_of_vertices(), kNone);  // every vertex the cracker made was a split tip; to be sure
   edges_.clear();
   std::vector<std::pair<uint32_t, uint32_t>> graph_edges;
   for (EdgeId e : cg.edges()) {
@@ -238,7 +239,6 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
     graph_edges.emplace_back(u, v);
     if (point_of[u] != kNone && point_of[v] != kNone) edges_.insert(edge_key(point_of[u], point_of[v]));
   }
-  point_of.resize(cg.number_of_vertices(), kNone);
   c.on_crack.assign(c.points.size(), 0);
   for (const auto& [a, b] : edges_) c.on_crack[a] = c.on_crack[b] = 1;
   const std::vector<int32_t> alg1 = crack_widths(CrackGraph::from_edges(cg.number_of_vertices(), graph_edges));
