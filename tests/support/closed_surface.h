@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <map>
 #include <string>
@@ -61,6 +62,19 @@ inline std::string manifold_problem(const bark::TriMesh& m) {
     if (steps != link[v].size()) return "vertex " + std::to_string(v) + " is pinched (several fans)";
   }
   return "";
+}
+
+// Every directed edge of `faces` used once and its reverse once: a closed, consistently
+// oriented 2-manifold (the growth volume's interface faces, say).
+inline bool closed_manifold(const std::vector<std::array<uint32_t, 3>>& faces) {
+  std::vector<std::array<uint32_t, 2>> directed;
+  for (const auto& f : faces)
+    for (size_t e = 0; e < 3; ++e) directed.push_back({f[e], f[(e + 1) % 3]});
+  std::sort(directed.begin(), directed.end());
+  if (std::adjacent_find(directed.begin(), directed.end()) != directed.end()) return false;
+  for (const auto& e : directed)
+    if (!std::binary_search(directed.begin(), directed.end(), std::array<uint32_t, 2>{e[1], e[0]})) return false;
+  return true;
 }
 
 }  // namespace phellem::test

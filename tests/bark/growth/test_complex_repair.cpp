@@ -17,11 +17,11 @@
 #include "bark/growth/interface_motion.h"
 #include "bark/growth/interface_refinement.h"
 #include "bark/growth/tet_flips.h"
-#include "tests/support/growth_checks.h"
+#include "tests/support/closed_surface.h"
 
 using namespace phellem;
 using namespace phellem::bark;
-using phellem::bark::test::closed_manifold;
+using phellem::test::closed_manifold;
 
 namespace {
 

@@ -13,11 +13,11 @@
 #include "bark/growth/cambial_growth.h"
 #include "bark/growth/growth_cracks.h"
 #include "bark/growth/interface_caps.h"
-#include "tests/support/growth_checks.h"
+#include "tests/support/closed_surface.h"
 
 using namespace phellem;
 using namespace phellem::bark;
-using phellem::bark::test::closed_manifold;
+using phellem::test::closed_manifold;
 
 namespace {
 

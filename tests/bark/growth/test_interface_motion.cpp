@@ -7,6 +7,7 @@
 #include "bark/growth/interface_motion.h"
 #include "bark/growth/growth_rings.h"
 #include "bark/growth/interface_refinement.h"
+#include "tests/support/closed_surface.h"
 
 #include <map>
 
@@ -90,16 +91,6 @@ TEST(InterfaceMotion, AMoveThatWouldInvertATetrahedronIsClampedNotApplied) {
 
 namespace {
 
-// Every interface edge is shared by exactly two interface faces, once in each direction: a
-// closed, consistently oriented 2-manifold.
-bool closed_manifold(const TetComplex& c) {
-  std::map<std::pair<uint32_t, uint32_t>, int> directed;
-  for (const auto& f : c.interface_faces())
-    for (int e = 0; e < 3; ++e) ++directed[{f[size_t(e)], f[size_t(e + 1) % 3]}];
-  for (const auto& [edge, n] : directed)
-    if (n != 1 || directed.count({edge.second, edge.first}) != 1 || directed.at({edge.second, edge.first}) != 1) return false;
-  return true;
-}
 
 }  // namespace
 
@@ -115,7 +106,7 @@ TEST(InterfaceRefinement, SplitsKeepTheGrowingSphereFineClosedAndPositive) {
     shortened += st.shortened + st.clamped;
     splits += split_long_interface_edges(c, max0);
     ASSERT_EQ(c.first_inverted(), -1) << "step " << k;
-    ASSERT_TRUE(closed_manifold(c)) << "step " << k;
+    ASSERT_TRUE(phellem::test::closed_manifold(c.interface_faces())) << "step " << k;
   }
   EXPECT_GT(splits, 100);
   for (const auto& e : interface_edges(c)) EXPECT_LE((c.points[e[0]] - c.points[e[1]]).norm(), max0 + 1e-12);
