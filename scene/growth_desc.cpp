@@ -114,7 +114,7 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
   return d;
 }
 
-double estimate_growth_bytes(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge) {
+GrowthSize estimate_growth_size(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge) {
   const auto& s = g.settings;
   const double edge_max = s.edge_max > 0 ? s.edge_max : 1.5 * mean_edge;
   const double edge_min = s.edge_min > 0 ? s.edge_min : 0.4 * edge_max;
@@ -128,7 +128,7 @@ double estimate_growth_bytes(const GrowthDesc& g, size_t input_vertices, double 
   // Measured on growth_tree_closeup: about 12 tetrahedra per interface vertex and 350 bytes per
   // tetrahedron with its adjacency, plus the rings (a copy of the interface each).
   const double rings = s.ring_interval > 0 ? double(s.steps) / s.ring_interval + 1 : 0;
-  return vertices_end * (12 * 350.0 + rings * 80.0);
+  return {vertices_end, vertices_end * (12 * 350.0 + rings * 80.0)};
 }
 
 }  // namespace phellem

@@ -56,9 +56,12 @@ struct GrowthDesc {
 // `base_dir` resolves the speed map's file name.
 GrowthDesc parse_growth(JsonObject o, const std::string& base_dir);
 
-// The memory a growth holds at its end (the tetrahedral complex, adjacency and rings), from
-// the input mesh's vertex count and area and the settings; used to refuse a growth before
-// TetGen runs.
-double estimate_growth_bytes(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge);
+// The size a growth reaches at its end, from the input mesh's vertex count and area and the
+// settings; used to refuse a growth before TetGen runs.
+struct GrowthSize {
+  double interface_vertices = 0;  // at the last step
+  double bytes = 0;               // the tetrahedral complex, adjacency and rings held then
+};
+GrowthSize estimate_growth_size(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge);
 
 }  // namespace phellem

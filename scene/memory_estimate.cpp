@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -312,7 +313,7 @@ MemoryItem geometry_item(const SceneDesc& desc, int height, const std::map<size_
   std::map<std::string, double> files;  // instanced mesh files: stored once
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
     const ObjectDesc& o = desc.objects[oi];
-    if (o.stress_bark) {
+    if (o.stress_bark && stress_triangles.count(oi)) {  // not a grown object with "cracks": false
       // The cracked mesh diced where its cracks reach (crack_aware, the default), or everywhere
       // (crack_aware false, or a mesh's own displacement: the surface's uniform dicing), and at
       // least one triangle per triangle of the cracked mesh. Where the cracks reach depends on
@@ -359,8 +360,16 @@ MemoryItem geometry_item(const SceneDesc& desc, int height, const std::map<size_
 
 MemoryItem base_item() { return {"the program itself", kBaseBytes, "", "", ""}; }
 
-// Cambial growth: the tetrahedral complex at the last step, from the input's size and area.
-MemoryItem growth_item(const ObjectDesc& o, size_t oi) {
+// Cambial growth: the tetrahedral complex at the last step, from the input's size and area;
+// with stress bark and cracks on, the crack coupling too (bark/growth/growth_cracks.h): the
+// cracking model over the whole interface, rebuilt every step, at its size at the last step.
+struct GrowthCost {
+  MemoryItem growth;
+  std::optional<MemoryItem> cracks;
+  double crack_triangles = 0;  // the cracked mesh rendered at the end (0 without coupling)
+};
+
+GrowthCost growth_cost(const ObjectDesc& o, size_t oi) {
   double n_in = 0, area = 0, edge = 0;
   if (o.type == ObjectType::Tree) {
     const DicingParams d = tree_mesh_dicing(o);
@@ -380,14 +389,26 @@ MemoryItem growth_item(const ObjectDesc& o, size_t oi) {
     area = lc.area;
   }
   edge = std::sqrt(area / std::max(1.0, 2 * n_in) / 0.4330127);  // the mean edge of that many equilateral triangles
-  MemoryItem m;
-  m.file = o.where.file;
-  m.bytes = estimate_growth_bytes(*o.growth, size_t(n_in), area, edge);
-  m.what = "the cambial growth of " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh") +
-           " (its tetrahedra at the last step)";
-  m.where = path(oi, "/growth/edge_length");
-  m.advice = "raise the growth's edge_length band, or lower its thickness or steps / ring_interval";
-  return m;
+  const GrowthSize size = estimate_growth_size(*o.growth, size_t(n_in), area, edge);
+  const std::string name = object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh");
+  GrowthCost c;
+  c.growth.file = o.where.file;
+  c.growth.bytes = size.bytes;
+  c.growth.what = "the cambial growth of " + name + " (its tetrahedra at the last step)";
+  c.growth.where = path(oi, "/growth/edge_length");
+  c.growth.advice = "raise the growth's edge_length band, or lower its thickness or steps / ring_interval";
+  if (o.stress_bark && o.growth->cracks) {
+    // A closed surface has two triangles per vertex; the coupling cracks it unpreprocessed.
+    const double triangles = 2 * size.interface_vertices;
+    const double cracks = 2.0 * double(o.stress_bark->params.iterations) * double(o.stress_bark->params.cracks_per_iteration);
+    c.crack_triangles = triangles + std::min(cracks, triangles);
+    MemoryItem m = c.growth;
+    m.bytes = c.crack_triangles * kStressBytesPerTriangleRaw;
+    m.what = "the crack coupling of " + name + " (about " + count(c.crack_triangles) + " triangles at the last step)";
+    m.advice = "raise the growth's edge_length band, or set \"cracks\": false";
+    c.cracks = m;
+  }
+  return c;
 }
 
 }  // namespace
@@ -438,9 +459,13 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
     }
     for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
       const ObjectDesc& o = desc.objects[oi];
-      if (o.growth)
-        e.moments.push_back(
-            {"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item(), growth_item(o, oi)}});
+      if (o.growth) {
+        const GrowthCost g = growth_cost(o, oi);
+        MemoryMoment m{"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item(), g.growth}};
+        if (g.cracks) m.items.push_back(*g.cracks);
+        e.moments.push_back(std::move(m));
+        continue;  // a grown object's bark is cracked as it grows (or not at all)
+      }
       if (!o.stress_bark) continue;
       e.moments.push_back({"cracking " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"),
                            {base_item(), stress_cost(o, oi).item}});
@@ -479,10 +504,16 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
       surfaces.push_back(kept);
     }
     if (o.growth) {
+      const GrowthCost g = growth_cost(o, oi);
       MemoryMoment m{"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item()}};
       m.items.insert(m.items.end(), surfaces.begin(), surfaces.end());
-      m.items.push_back(growth_item(o, oi));
+      m.items.push_back(g.growth);
+      if (g.cracks) {
+        m.items.push_back(*g.cracks);
+        stress_triangles[oi] = g.crack_triangles;
+      }
       e.moments.push_back(std::move(m));
+      continue;  // cracked as it grew (or not at all)
     }
     if (o.stress_bark) {
       const StressCost c = stress_cost(o, oi);

@@ -85,5 +85,45 @@ TEST(MemoryEstimate, NamesTheLargestPartAtThePeak) {
   EXPECT_NO_THROW(check_memory(estimate_memory(d, render), {6e9, "test"}));
 }
 
+std::string grown_log(const std::string& thickness, const std::string& cracks) {
+  return R"({"objects": [{"type": "mesh", "procedural": {"shape": "log", "triangles": 4000, "radius": 0.08, "height": 0.6},
+      "growth": {"steps": 10, "thickness": )" + thickness + R"(, "cracks": )" + cracks + R"(},
+      "bark": {"model": "stress", "pattern": "horizontal"}}]})";
+}
+
+const MemoryItem* item_named(const MemoryMoment& m, const std::string& start) {
+  for (const auto& i : m.items)
+    if (i.what.rfind(start, 0) == 0) return &i;
+  return nullptr;
+}
+
+TEST(MemoryEstimate, AGrowthCountsItsTetrahedraAndTheCrackingOfItsGrownSurface) {
+  for (MemoryCommand command : {MemoryCommand::Simulate, MemoryCommand::Render}) {
+    MemoryRequest req;
+    req.command = command;
+    req.height = 100;
+    const auto moment = [&](const std::string& json) {
+      const MemoryEstimate e = estimate_memory(parse_scene(json, "scene.json", "."), req);
+      for (const auto& m : e.moments)
+        if (m.stage.rfind("growing", 0) == 0) return m;
+      ADD_FAILURE() << "no growing moment";
+      return MemoryMoment{};
+    };
+    const MemoryMoment on = moment(grown_log("0.06", "true")), off = moment(grown_log("0.06", "false"));
+    const MemoryItem* coupling = item_named(on, "the crack coupling of");
+    ASSERT_NE(coupling, nullptr);
+    EXPECT_EQ(coupling->where, "/objects/0/growth/edge_length");
+    EXPECT_EQ(item_named(off, "the crack coupling of"), nullptr);
+    EXPECT_NEAR(on.bytes() - off.bytes(), coupling->bytes, 1.0);
+    // The coupling cracks the grown surface: thicker growth, more surface, more of both.
+    const MemoryMoment thick = moment(grown_log("0.24", "true"));
+    EXPECT_GT(item_named(thick, "the crack coupling of")->bytes, 1.5 * coupling->bytes);
+    EXPECT_GT(item_named(thick, "the cambial growth of")->bytes, 1.5 * item_named(on, "the cambial growth of")->bytes);
+    // No separate cracking of the ungrown input: the coupling is the object's cracking.
+    const MemoryEstimate e = estimate_memory(parse_scene(grown_log("0.06", "true"), "scene.json", "."), req);
+    for (const auto& m : e.moments) EXPECT_EQ(m.stage.rfind("cracking", 0), std::string::npos) << m.stage;
+  }
+}
+
 }  // namespace
 }  // namespace phellem
