@@ -1,6 +1,7 @@
 #include "cli/growth.h"
 
 #include <cmath>
+#include <map>
 #include <memory>
 
 #include "cli/frame_sequence.h"
@@ -39,8 +40,12 @@ int run_growth(const cli::Options& o) {
   }
   // Cambial growth of meshes (Kratt et al.): each frame shows the surface at its step.
   std::vector<std::pair<size_t, bark::CambialGrowth>> growths;
+  std::map<size_t, std::shared_ptr<const bark::TextureScaleField>> start_scales;  // the texture cells' reference (sec. 4.6)
   for (size_t oi = 0; oi < l.desc.objects.size(); ++oi)
-    if (l.desc.objects[oi].growth) growths.emplace_back(oi, start_growth(l.desc, oi, !o.quiet));
+    if (l.desc.objects[oi].growth) {
+      growths.emplace_back(oi, start_growth(l.desc, oi, !o.quiet));
+      start_scales[oi] = start_texture_scale(growths.back().second);
+    }
   if (sims.empty() && growths.empty())
     throw UserError(o.scene, "/objects",
                     "nothing grows: no tree object has a \"bark\": {\"model\": \"strips\"} and no mesh a \"growth\"");
@@ -72,10 +77,12 @@ int run_growth(const cli::Options& o) {
       Progress bar("grow " + name, step - g.steps_done(), !o.quiet && step > g.steps_done());
       while (g.steps_done() < step && g.step()) bar.advance();
       bar.finish();
-      ObjectBark& b = bark.objects[oi];
-      b.grown = grown_surface(g);
       // Stress bark: the cracks as they stand at this step (they open as the surface grows).
-      b.cracked = g.cracks() ? g.cracks()->result() : nullptr;
+      GrownBark now = grown_bark(g, *l.desc.objects[oi].growth, *start_scales.at(oi));
+      ObjectBark& b = bark.objects[oi];
+      b.grown = std::move(now.surface);
+      b.cracked = std::move(now.cracked);
+      b.texture_levels = std::move(now.texture_levels);
     }
     const auto scene = build_render_scene(frame_desc, bark, frame_desc.camera, l.width, l.height, !o.quiet);
     render_frame(o, l, *scene, Camera(frame_desc.camera, l.width, l.height), f, frames, out);

@@ -17,10 +17,20 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-GlbMesh surface_mesh(const bark::TriMesh& t) {
+// The texture cell levels (sec. 4.6) as glTF custom attributes, for a shader that tiles the
+// textures the same way (none when there are none).
+std::vector<std::pair<std::string, std::vector<float>>> level_attributes(const std::vector<Eigen::Vector2f>& levels) {
+  if (levels.empty()) return {};
+  std::vector<float> u, v;
+  for (const auto& l : levels) u.push_back(l.x()), v.push_back(l.y());
+  return {{"_TEXTURE_LEVEL_U", u}, {"_TEXTURE_LEVEL_V", v}};
+}
+
+GlbMesh surface_mesh(const bark::TriMesh& t, const std::vector<Eigen::Vector2f>& levels) {
   GlbMesh m;
   m.vertices = to_mesh_data(t);
-  compute_vertex_normals(m.vertices);
+  compute_vertex_normals(m.vertices, true);
+  m.scalars = level_attributes(levels);
   GlbPart p;
   p.name = "bark";
   p.indices = m.vertices.indices;
@@ -64,9 +74,13 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
     const auto tw = Clock::now();
     const std::string glb = (dir / (name + ".glb")).string();
     if (cracked)
-      out.write("-o", glb, [&](const std::string& tmp) { write_cracked_glb(tmp, name, *cracked); });
+      out.write("-o", glb, [&](const std::string& tmp) {
+        write_cracked_glb(tmp, name, *cracked, level_attributes(run.texture_levels));
+      });
     else
-      out.write("-o", glb, [&](const std::string& tmp) { write_glb(tmp, name, surface_mesh(*run.surface)); });
+      out.write("-o", glb, [&](const std::string& tmp) {
+        write_glb(tmp, name, surface_mesh(*run.surface, run.texture_levels));
+      });
     const std::string rings = (dir / (name + "_rings.glb")).string();
     if (!run.rings.empty())
       out.write("-o", rings, [&](const std::string& tmp) { write_glb(tmp, name + "_rings", rings_mesh(run.rings)); });

@@ -7,7 +7,8 @@
 
 namespace phellem {
 
-void write_cracked_glb(const std::string& path, const std::string& name, const bark::CrackedMesh& c) {
+void write_cracked_glb(const std::string& path, const std::string& name, const bark::CrackedMesh& c,
+                       const std::vector<std::pair<std::string, std::vector<float>>>& extra) {
   GlbMesh glb;
   MeshData& v = glb.vertices;
   const size_t n = c.mesh.positions.size();
@@ -27,6 +28,7 @@ void write_cracked_glb(const std::string& path, const std::string& name, const b
                  {"_DISPLACEMENT_X", dx},
                  {"_DISPLACEMENT_Y", dy},
                  {"_DISPLACEMENT_Z", dz}};
+  glb.scalars.insert(glb.scalars.end(), extra.begin(), extra.end());
   GlbPart bark{"bark", v.indices, Color(0.45f, 0.36f, 0.27f), 0.8f};
   GlbPart cracks{"cracks", {}, Color(0.05f, 0.03f, 0.02f), 1.0f};
   cracks.lines = true;

@@ -11,7 +11,9 @@
 
 namespace phellem {
 
-void write_cracked_glb(const std::string& path, const std::string& name, const bark::CrackedMesh& mesh);
+// `extra`: more per-vertex custom attributes (names starting with "_", one value per vertex).
+void write_cracked_glb(const std::string& path, const std::string& name, const bark::CrackedMesh& mesh,
+                       const std::vector<std::pair<std::string, std::vector<float>>>& extra = {});
 
 // Throws UserError naming the file and the glTF element when it is not such a file.
 bark::CrackedMesh read_cracked_glb(const std::string& path);

@@ -123,7 +123,7 @@ MaterialDesc convert_material(const tinygltf::Model& m, int index, const std::st
 
 }  // namespace
 
-LoadedModel load_gltf(const std::string& path) {
+LoadedModel load_gltf(const std::string& path, const std::string& attribute) {
   const tinygltf::Model model = open_gltf(path);
   GltfReader rd(model, path);
   LoadedModel out;
@@ -181,6 +181,13 @@ LoadedModel load_gltf(const std::string& path) {
           rd.fail(where + ".material", "material index " + std::to_string(prim.material) + " out of range");
         md.material = prim.material;
         if (!md.normals.empty()) compute_tangents(md);
+        if (!attribute.empty()) {
+          const auto it = prim.attributes.find(attribute);
+          if (it == prim.attributes.end()) rd.fail(where + ".attributes", "has no vertex attribute " + attribute);
+          std::vector<float> a = rd.first_components(it->second, where + ".attributes." + attribute);
+          if (a.size() != nv) rd.fail(where + ".attributes." + attribute, "count differs from POSITION");
+          out.attribute.push_back(std::move(a));
+        }
         out.meshes.push_back(std::move(md));
       }
     }
@@ -203,10 +210,14 @@ LoadedModel load_gltf(const std::string& path) {
   return out;
 }
 
-LoadedModel load_mesh_file(const std::string& path) {
+LoadedModel load_mesh_file(const std::string& path, const std::string& attribute) {
   const std::string ext = fs::path(path).extension().string();
-  if (ext == ".obj") return load_obj(path);
-  return load_gltf(path);
+  if (ext == ".obj") {
+    if (!attribute.empty())
+      throw UserError(path, "", "an OBJ file carries no vertex attribute " + attribute + "; use a glTF file (.glb/.gltf)");
+    return load_obj(path);
+  }
+  return load_gltf(path, attribute);
 }
 
 }  // namespace phellem

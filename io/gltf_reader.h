@@ -65,6 +65,17 @@ class GltfReader {
     return out;
   }
 
+  // Reads the first component of every element of accessor `index` (SCALAR to VEC4: a painted
+  // vertex colour's red, a custom attribute's value).
+  std::vector<float> first_components(int index, const std::string& where) const {
+    const int nc = tinygltf::GetNumComponentsInType(accessor(index, where).type);
+    if (nc < 1 || nc > 4) fail(where, "accessor " + std::to_string(index) + " must be SCALAR, VEC2, VEC3 or VEC4");
+    const std::vector<float> all = floats(index, nc, where);
+    std::vector<float> out(all.size() / size_t(nc));
+    for (size_t i = 0; i < out.size(); ++i) out[i] = all[i * size_t(nc)];
+    return out;
+  }
+
   std::vector<uint32_t> indices(int index, const std::string& where) const {
     const tinygltf::Accessor& a = accessor(index, where);
     if (a.type != TINYGLTF_TYPE_SCALAR) fail(where, "index accessor must be SCALAR");

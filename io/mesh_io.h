@@ -13,12 +13,17 @@ namespace phellem {
 struct LoadedModel {
   std::vector<MeshData> meshes;         // material indexes `materials` (-1: none)
   std::vector<MaterialDesc> materials;  // from the file (glTF PBR / OBJ MTL)
+  // Per mesh, per vertex: the first component of the vertex attribute asked for by name (glTF
+  // only, e.g. "COLOR_0" or a custom "_GROWTH_SPEED"); empty when none was asked for.
+  std::vector<std::vector<float>> attribute;
 };
 
 // Every problem is a UserError naming the file and the glTF element (e.g.
 // "meshes[0].primitives[1].indices") or OBJ line.
-LoadedModel load_mesh_file(const std::string& path);
-LoadedModel load_gltf(const std::string& path);
+// `attribute`: a vertex attribute every triangle primitive must carry (glTF; an OBJ file has
+// none and is refused), read into LoadedModel::attribute.
+LoadedModel load_mesh_file(const std::string& path, const std::string& attribute = {});
+LoadedModel load_gltf(const std::string& path, const std::string& attribute = {});
 LoadedModel load_obj(const std::string& path);
 
 }  // namespace phellem

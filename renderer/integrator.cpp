@@ -63,7 +63,7 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
     // the first bounce where the lobe spreads the cone).
     const float cone = pixel_angle * (depth == 0 ? 1.0f : 8.0f);
     const ShadingInput in{hit.uv, hit.t * cone * hit.uv_per_metre, depth == 0, hit.bark ? &hit.bark_albedo : nullptr,
-                          hit.albedo_scale, hit.bark_roughness};
+                          hit.albedo_scale, hit.bark_roughness, hit.texture_levels};
     if (depth == 0) {
       first->hit = true;
       first->position = hit.p;

@@ -27,6 +27,7 @@ struct ShadingInput {
   const Color* base_override = nullptr;  // dressed bark albedo replacing the base colour
   Color base_scale = Color::Ones();      // multiplies the base colour (crack depth darkening, bark tint)
   float roughness_override = -1;         // the bark's own roughness replacing the material's (< 0: none)
+  Vec2f texture_levels{0, 0};            // a grown surface's texture cell levels along u and v (≥ 0)
 };
 
 BSDF evaluate_bsdf(const Material& m, const TextureStore& tex, const ShadingInput& in, Color* albedo);

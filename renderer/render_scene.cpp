@@ -272,6 +272,7 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
   hit->bark = false;
   hit->albedo_scale = Color::Ones();
   hit->bark_roughness = -1;
+  hit->texture_levels = Vec2f(0, 0);
   if (shape->sphere) {
     const Vec3f n = (hit->p - shape->center).normalized();
     hit->ng = hit->ns = n;
@@ -302,6 +303,8 @@ void RenderScene::fill_hit(const RTCRayHit& rh, const Ray& ray, SurfaceHit* hit)
     hit->uv = Vec2f(u, v);
     hit->uv_per_metre = 1.0f;
   }
+  if (!m.texture_levels.empty())
+    hit->texture_levels = w * m.texture_levels[idx[0]] + u * m.texture_levels[idx[1]] + v * m.texture_levels[idx[2]];
   if (!m.displacement.empty())
     hit->displacement = w * m.displacement[idx[0]] + u * m.displacement[idx[1]] + v * m.displacement[idx[2]];
   if (shape->bark && !m.params.empty()) {

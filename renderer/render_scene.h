@@ -31,6 +31,7 @@ struct SurfaceHit {
   Vec2f uv{0, 0};
   Vec4f tangent{1, 0, 0, 1};
   float uv_per_metre = 1.0f;  // for texture footprints
+  Vec2f texture_levels{0, 0};  // a grown surface's texture cell levels (MeshData::texture_levels)
   int material = 0;
   int object_id = 0;    // 1-based object index in the scene file
   int area_light = -1;  // triangle index in the area lights, or -1

@@ -1,7 +1,11 @@
 #include "renderer/scene_contents.h"
 
+#include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <map>
 
+#include "bark/growth/face_origin.h"
 #include "io/mesh_io.h"
 #include "scene/displacement.h"
 #include "scene/mesh_source.h"
@@ -29,8 +33,10 @@ const ObjectBark& bark_of(const BarkResults& bark, size_t oi, const ObjectDesc& 
 
 // Stress bark (mesh or tree): the cracked mesh, displaced by its cracks' V-profiles as real
 // geometry, diced only where the cracks reach.
-DicingJob stress_job(const SceneDesc& desc, const ObjectDesc& o, const bark::CrackedMesh& cracked, int mat, int object_id) {
+DicingJob stress_job(const SceneDesc& desc, const ObjectDesc& o, const ObjectBark& bark, int mat, int object_id) {
+  const bark::CrackedMesh& cracked = *bark.cracked;
   MeshData base = to_mesh_data(cracked.mesh);
+  base.texture_levels = bark.texture_levels;  // a grown surface's (sec. 4.6)
   compute_vertex_normals(base, true);  // one normal per position: seams shade (and displace) alike
   std::shared_ptr<const bark::CrackBarkSurface> surface = crack_surface(o, cracked);
   DicingJob j;
@@ -53,6 +59,35 @@ DicingJob stress_job(const SceneDesc& desc, const ObjectDesc& o, const bark::Cra
     j.refine = [surface](const Vec3f& a, const Vec3f& b) { return surface->reaches(a, b); };
   j.bark = surface;
   return j;
+}
+
+// The faces of `m` with each material as their own mesh (vertices renumbered), in the order
+// of the materials.
+std::vector<std::pair<int, MeshData>> split_by_material(const MeshData& m, const std::vector<int>& face_material) {
+  std::map<int, MeshData> parts;
+  std::map<int, std::vector<uint32_t>> renumber;
+  for (size_t f = 0; f < face_material.size(); ++f) {
+    MeshData& part = parts[face_material[f]];
+    std::vector<uint32_t>& to = renumber[face_material[f]];
+    if (to.empty()) to.assign(m.positions.size(), UINT32_MAX);
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = m.indices[3 * f + size_t(k)];
+      if (to[v] == UINT32_MAX) {
+        to[v] = uint32_t(part.positions.size());
+        part.positions.push_back(m.positions[v]);
+        if (!m.normals.empty()) part.normals.push_back(m.normals[v]);
+        if (!m.uvs.empty()) part.uvs.push_back(m.uvs[v]);
+        if (!m.texture_levels.empty()) part.texture_levels.push_back(m.texture_levels[v]);
+      }
+      part.indices.push_back(to[v]);
+    }
+  }
+  std::vector<std::pair<int, MeshData>> out;
+  for (auto& [mat, part] : parts) {
+    part.material = mat;
+    out.emplace_back(mat, std::move(part));
+  }
+  return out;
 }
 
 }  // namespace
@@ -88,6 +123,34 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
 
   std::map<std::string, int> prototype_of_file;
   std::map<std::string, std::pair<LoadedModel, int>> models;  // file -> (model, first material index)
+  auto model_of = [&](const std::string& file) -> const std::pair<LoadedModel, int>& {
+    auto it = models.find(file);
+    if (it == models.end()) {
+      LoadedModel model = load_mesh_file(file);
+      const int first = int(c.materials.size());
+      for (const auto& md : model.materials) c.materials.push_back(compile_material(md, textures));
+      it = models.emplace(file, std::make_pair(std::move(model), first)).first;
+    }
+    return it->second;
+  };
+  // A grown mesh file without a scene material keeps its parts' materials: each grown face
+  // takes the material of the input face nearest to it (bark/growth/face_origin.h); empty when
+  // the scene names a material or the file gives every part the same one.
+  auto grown_face_materials = [&](const ObjectDesc& o, int default_material, const bark::TriMesh& grown) {
+    std::vector<int> out;
+    if (!o.growth || o.procedural || o.type != ObjectType::Mesh || !o.material.empty()) return out;
+    const auto& [model, first] = model_of(o.file);
+    std::vector<int> input_material;  // per input face, in object_trimesh's order (meshes in file order)
+    for (const MeshData& m : model.meshes)
+      input_material.insert(input_material.end(), m.triangle_count(), m.material >= 0 ? first + m.material : default_material);
+    if (input_material.empty() ||
+        std::all_of(input_material.begin(), input_material.end(), [&](int k) { return k == input_material[0]; })) {
+      if (!input_material.empty()) out.assign(grown.triangles.size(), input_material[0]);
+      return out;
+    }
+    for (uint32_t f : bark::nearest_input_faces(object_trimesh(o), grown)) out.push_back(input_material[f]);
+    return out;
+  };
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {
     const ObjectDesc& o = desc.objects[oi];
     const int object_id = int(oi) + 1;
@@ -112,12 +175,14 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
         break;
       case ObjectType::Tree: {
         if (o.stress_bark && !(o.growth && !o.growth->cracks)) {
-          c.jobs.push_back(stress_job(desc, o, *bark_of(bark, oi, o).cracked, mat, object_id));
+          c.jobs.push_back(stress_job(desc, o, bark_of(bark, oi, o), mat, object_id));
           break;
         }
         if (o.growth) {  // the joined surface of its trunk and branches at the last step (world space)
-          MeshData w = to_mesh_data(*bark_of(bark, oi, o).grown);
-          compute_vertex_normals(w);
+          const ObjectBark& b = bark_of(bark, oi, o);
+          MeshData w = to_mesh_data(*b.grown);
+          w.texture_levels = b.texture_levels;
+          compute_vertex_normals(w, true);  // seams cut for the UVs shade as one surface
           add_mesh(std::move(w), mat, object_id);
           break;
         }
@@ -147,28 +212,45 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
       }
       case ObjectType::Mesh: {
         if (o.stress_bark && !(o.growth && !o.growth->cracks)) {
-          c.jobs.push_back(stress_job(desc, o, *bark_of(bark, oi, o).cracked, mat, object_id));
+          const ObjectBark& b = bark_of(bark, oi, o);
+          DicingJob job = stress_job(desc, o, b, mat, object_id);
+          const std::vector<int> face_mat = o.growth ? grown_face_materials(o, default_material, b.cracked->mesh) : std::vector<int>{};
+          if (face_mat.empty()) {
+            c.jobs.push_back(std::move(job));
+            break;
+          }
+          // One job per material, sharing the cracks (the displacement is a function of position,
+          // so the parts meet without a gap).
+          for (auto& [part_mat, part] : split_by_material(*job.base, face_mat)) {
+            DicingJob pj = job;
+            pj.material = part_mat;
+            pj.base = std::make_shared<MeshData>(std::move(part));
+            c.jobs.push_back(std::move(pj));
+          }
           break;
         }
         if (o.procedural || o.growth) {
           // A grown mesh is the surface of its last step (world space, as object_trimesh's).
-          MeshData w = to_mesh_data(o.growth ? *bark_of(bark, oi, o).grown : object_trimesh(o));
-          compute_vertex_normals(w);
-          if (o.displacement.type != DisplacementDesc::Type::None)
-            add_job(mat, object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement), nullptr);
+          const bark::TriMesh& t = o.growth ? *bark_of(bark, oi, o).grown : object_trimesh(o);
+          MeshData w = to_mesh_data(t);
+          if (o.growth) w.texture_levels = bark_of(bark, oi, o).texture_levels;
+          compute_vertex_normals(w, o.growth != nullptr);  // a grown mesh's seams cut for the UVs shade as one surface
+          const std::vector<int> face_mat = grown_face_materials(o, default_material, t);
+          std::vector<std::pair<int, MeshData>> parts;
+          if (face_mat.empty())
+            parts.emplace_back(mat, std::move(w));
           else
-            add_mesh(std::move(w), mat, object_id);
+            parts = split_by_material(w, face_mat);
+          for (auto& [part_mat, part] : parts) {
+            if (o.displacement.type != DisplacementDesc::Type::None)
+              add_job(part_mat, object_id, {}, std::make_shared<MeshData>(std::move(part)), make_displacement(o.displacement),
+                      nullptr);
+            else
+              add_mesh(std::move(part), part_mat, object_id);
+          }
           break;
         }
-        auto it = models.find(o.file);
-        if (it == models.end()) {
-          LoadedModel model = load_mesh_file(o.file);
-          const int first = int(c.materials.size());
-          for (const auto& md : model.materials) c.materials.push_back(compile_material(md, textures));
-          it = models.emplace(o.file, std::make_pair(std::move(model), first)).first;
-        }
-        const LoadedModel& model = it->second.first;
-        const int first_mat = it->second.second;
+        const auto& [model, first_mat] = model_of(o.file);
         auto resolve = [&](const MeshData& m) {
           if (!o.material.empty()) return mat;
           return m.material >= 0 ? first_mat + m.material : default_material;

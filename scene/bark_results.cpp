@@ -21,6 +21,7 @@ ObjectBark simulate_object_bark(const SceneDesc& desc, size_t object, bool progr
     const GrowthRun run = run_growth_object(desc, object, progress);
     out.grown = run.surface;
     out.cracked = run.cracked;  // stress bark cracked as it grew (none with "cracks": false)
+    out.texture_levels = run.texture_levels;
   } else if (o.stress_bark) {
     out.cracked = run_stress_object(desc, object, std::nullopt, progress).cracked;
   } else if (o.type == ObjectType::Tree && o.tree.strip_bark) {

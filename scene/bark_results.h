@@ -20,6 +20,9 @@ struct ObjectBark {
   std::vector<std::shared_ptr<const bark::FieldBarkSurface>> strip_parts;  // strip bark: one per tree part
   std::shared_ptr<const bark::CrackedMesh> cracked;                        // stress bark
   std::shared_ptr<const bark::TriMesh> grown;  // cambial growth: the surface at the last step (world space)
+  // Cambial growth: per vertex of the mesh rendered (`cracked` when there is one, else `grown`)
+  // its texture cell levels (bark/growth/texture_cells.h); empty: none.
+  std::vector<Eigen::Vector2f> texture_levels;
 };
 
 struct BarkResults {

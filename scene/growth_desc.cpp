@@ -72,15 +72,22 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
   if (auto v = o.get("speed_map")) {
     JsonObject m = v->object();
     auto map = std::make_shared<GrowthSpeedMap>();
-    auto file = m.at("file");
-    const SceneImage img = read_scene_image(file, base_dir);
-    map->width = img.width;
-    map->height = img.height;
-    map->values.resize(size_t(img.width) * size_t(img.height));
-    for (size_t i = 0; i < map->values.size(); ++i) {
-      map->values[i] = img.pixels[i * size_t(img.channels)];
-      if (!(map->values[i] >= 0 && map->values[i] <= 1e6f))
-        file.fail("image " + img.path + " holds a value outside [0, 1e6] (a speed factor: non-negative and finite)");
+    if (auto a = m.get("attribute")) {
+      if (m.get("file")) a->fail("a speed map is an image \"file\" or a vertex \"attribute\", not both");
+      map->attribute = a->string();
+      if (map->attribute.empty() || map->attribute.size() > 64)
+        a->fail("attribute must name a glTF vertex attribute (e.g. \"COLOR_0\" or \"_GROWTH_SPEED\")");
+    } else {
+      auto file = m.at("file");
+      const SceneImage img = read_scene_image(file, base_dir);
+      map->width = img.width;
+      map->height = img.height;
+      map->values.resize(size_t(img.width) * size_t(img.height));
+      for (size_t i = 0; i < map->values.size(); ++i) {
+        map->values[i] = img.pixels[i * size_t(img.channels)];
+        if (!(map->values[i] >= 0 && map->values[i] <= 1e6f))
+          file.fail("image " + img.path + " holds a value outside [0, 1e6] (a speed factor: non-negative and finite)");
+      }
     }
     if (auto w = m.get("scale")) map->scale = in_range(*w, 0, 1000, "scale must lie in [0, 1000] (multiplies the map's values)");
     m.finish();
@@ -91,6 +98,7 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
   }
   if (auto v = o.get("ring_interval")) s.ring_interval = v->integer(0, 100000);
   if (auto v = o.get("cracks")) d.cracks = v->boolean();
+  if (auto v = o.get("texture_cells")) d.texture_cells = v->boolean();
   if (auto v = o.get("crack_iterations")) d.crack_iterations = v->integer(0, 10000);
   if (auto v = o.get("stretch_stress"))
     d.stretch_stress = in_range(*v, 0, 1e6f, "stretch_stress must lie in [0, 1e6] (stress per unit strain, in units of the bark's magnitude)");

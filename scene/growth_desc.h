@@ -10,11 +10,13 @@
 //     "eccentricity": 0.2, "eccentricity_direction": [0, 1, 0],   // Eq. (3)
 //     "strokes": [{"point": [x, y, z], "radius": 0.05, "value": 1}],  // sec. 4.4
 //     "speed_map": {"file": "paint.png", "scale": 1},   // sec. 4.4: speed × scale × map(uv)
+//                  or {"attribute": "COLOR_0"}      // ... × a glTF mesh's vertex attribute (first component)
 //     "obstacles": ["wire"],           // names of other mesh or sphere objects
 //     "ring_interval": 10,             // steps between growth rings (0: none)
 //     "cracks": true,                  // with stress bark: crack the surface as it grows (false: no cracks)
 //     "crack_iterations": 0,           // stress iterations after each step (0: the bark's iterations spread over the steps)
 //     "stretch_stress": 4,             // stress per unit of strain as the surface stretches (× the bark's magnitude)
+//     "texture_cells": true,           // sec. 4.6: textures repeat as the surface stretches, cells keep their size
 //     "edge_length": [0.004, 0.01],    // m: the interface's edge band (default: from the mesh)
 //     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5, "lattice": 0},  // lattice: TetSettings
 //     "reverse": false                 // sec. 4.3: shrink the mesh back to its age_start
@@ -35,9 +37,12 @@ class JsonObject;
 // A painted speed map (sec. 4.4): its first channel as stored (numbers, not colours), row 0
 // at v = 0 (glTF), repeated outside [0, 1]; the speed is multiplied by scale × the bilinear value
 // at each vertex's texture coordinates.
+// Or painted on the vertices: `attribute` names a vertex attribute of the object's glTF file
+// (a painted COLOR_0's red channel, a custom "_GROWTH_SPEED"), its first component the factor.
 struct GrowthSpeedMap {
   int width = 0, height = 0;
   std::vector<float> values;
+  std::string attribute;  // non-empty: a vertex attribute instead of an image
   float scale = 1;
   float at(double u, double v) const;
 };
@@ -49,6 +54,7 @@ struct GrowthDesc {
   bool cracks = true;
   int crack_iterations = 0;  // 0: ceil(the stress bark's iterations / steps)
   float stretch_stress = 4;
+  bool texture_cells = true;  // sec. 4.6 (bark/growth/texture_cells.h); false: textures stretch with the surface
   std::shared_ptr<const GrowthSpeedMap> speed_map;
   Location where;  // of the growth object itself
 };

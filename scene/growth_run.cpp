@@ -1,6 +1,8 @@
 #include "scene/growth_run.h"
 
 #include "bark/geometry/procedural_meshes.h"
+#include "bark/geometry/uv_seams.h"
+#include "bark/growth/texture_cells.h"
 #include "scene/mesh_source.h"
 #include "util/errors.h"
 #include "util/progress.h"
@@ -29,9 +31,19 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
     obstacles.push_back({obstacle_mesh(desc.objects.at(g.obstacles[k])), g.where.path + "/obstacles/" + std::to_string(k)});
   // Meshes that cannot grow (open, overlapping) are reported at the growth block and at the
   // obstacle's entry in it.
-  const bark::TriMesh surface = object_trimesh(obj);
   std::vector<float> speed;
-  if (g.speed_map) {
+  const std::string attribute = g.speed_map ? g.speed_map->attribute : std::string();
+  const bark::TriMesh surface = object_trimesh(obj, attribute, &speed);
+  if (!attribute.empty()) {
+    // Painted on the vertices (sec. 4.4): the attribute's first component × scale.
+    for (size_t v = 0; v < speed.size(); ++v) {
+      if (!(speed[v] >= 0 && speed[v] <= 1e6f))
+        throw UserError(desc.file, g.where.path + "/speed_map/attribute",
+                        obj.file + ": vertex " + std::to_string(v) + " has " + attribute + " = " + std::to_string(speed[v]) +
+                            "; a speed factor must lie in [0, 1e6]");
+      speed[v] *= g.speed_map->scale;
+    }
+  } else if (g.speed_map) {
     if (!surface.has_uvs())
       throw UserError(desc.file, g.where.path + "/speed_map", "a speed map needs a mesh with texture coordinates");
     for (const auto& uv : surface.uvs) speed.push_back(g.speed_map->scale * g.speed_map->at(uv.x(), uv.y()));
@@ -58,8 +70,31 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
   return growth;
 }
 
-std::shared_ptr<const bark::TriMesh> grown_surface(const bark::CambialGrowth& g) {
-  return std::make_shared<const bark::TriMesh>(bark::extract_interface(g.complex()).mesh);
+std::shared_ptr<const bark::TextureScaleField> start_texture_scale(const bark::CambialGrowth& g) {
+  if (g.steps_done() != 0) throw std::logic_error("start_texture_scale: the growth has already stepped");
+  return std::make_shared<const bark::TextureScaleField>(bark::extract_interface(g.complex()).mesh);
+}
+
+GrownBark grown_bark(const bark::CambialGrowth& g, const GrowthDesc& desc, const bark::TextureScaleField& start_scale) {
+  GrownBark b;
+  std::vector<uint32_t> source;
+  auto surface = std::make_shared<bark::TriMesh>(bark::cut_uv_seams(bark::extract_interface(g.complex()).mesh));
+  if (g.cracks()) {
+    std::shared_ptr<const bark::CrackedMesh> cracked = g.cracks()->result();
+    auto cut = std::make_shared<bark::CrackedMesh>(*cracked);
+    cut->mesh = bark::cut_uv_seams(cracked->mesh, &source);
+    // Copies at a seam carry their vertex's crack attributes; crack edges keep the originals.
+    for (size_t v = cracked->mesh.positions.size(); v < source.size(); ++v) {
+      cut->crack_width.push_back(cracked->crack_width[source[v]]);
+      cut->component.push_back(cracked->component[source[v]]);
+      cut->displacement.push_back(cracked->displacement[source[v]]);
+    }
+    b.cracked = cut;
+  }
+  if (desc.texture_cells)
+    b.texture_levels = bark::texture_cell_levels(b.cracked ? b.cracked->mesh : *surface, start_scale);
+  b.surface = std::move(surface);
+  return b;
 }
 
 GrowthRun run_growth_object(const SceneDesc& desc, size_t oi, bool progress,
@@ -67,6 +102,7 @@ GrowthRun run_growth_object(const SceneDesc& desc, size_t oi, bool progress,
   const ObjectDesc& obj = desc.objects.at(oi);
   const std::string name = obj.name.empty() ? "mesh" + std::to_string(oi) : obj.name;
   bark::CambialGrowth growth = start_growth(desc, oi, progress);
+  const auto start_scale = start_texture_scale(growth);
   {
     Progress bar("grow " + name, growth.steps_total(), progress);
     while (growth.step()) {
@@ -76,8 +112,7 @@ GrowthRun run_growth_object(const SceneDesc& desc, size_t oi, bool progress,
     bar.finish();
   }
   GrowthRun run;
-  run.surface = grown_surface(growth);
-  if (growth.cracks()) run.cracked = growth.cracks()->result();
+  static_cast<GrownBark&>(run) = grown_bark(growth, *obj.growth, *start_scale);
   run.rings = growth.rings();
   run.stats = growth.stats();
   run.steps = growth.steps_done();

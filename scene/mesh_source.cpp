@@ -77,7 +77,11 @@ DicingParams tree_mesh_dicing(const ObjectDesc& o) {
   return d;
 }
 
-bark::TriMesh object_trimesh(const ObjectDesc& o) {
+bark::TriMesh object_trimesh(const ObjectDesc& o) { return object_trimesh(o, {}, nullptr); }
+
+bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values) {
+  if (!attribute.empty() && (o.type != ObjectType::Mesh || o.procedural || !values))
+    throw std::logic_error("object_trimesh: a vertex attribute needs a mesh file");
   bark::TriMesh t;
   if (o.type == ObjectType::Tree) {
     // The trunk and branches (with the tree's own displacement), each diced in object space
@@ -118,7 +122,9 @@ bark::TriMesh object_trimesh(const ObjectDesc& o) {
   if (o.procedural) {
     t = procedural_trimesh(*o.procedural);
   } else {
-    const LoadedModel model = load_mesh_file(o.file);
+    const LoadedModel model = load_mesh_file(o.file, attribute);
+    if (values) values->clear();
+    for (const auto& a : model.attribute) values->insert(values->end(), a.begin(), a.end());
     for (const MeshData& m : model.meshes) {
       const uint32_t base = uint32_t(t.positions.size());
       for (const Vec3f& p : m.positions) t.positions.push_back(p.cast<double>());

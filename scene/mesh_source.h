@@ -15,6 +15,9 @@ namespace phellem {
 // (tree_mesh_dicing) and joined at the branchings, with flat caps on the open ends: one closed
 // surface (bark/geometry/tube_junctions.h), which a growing tree requires of every branch.
 bark::TriMesh object_trimesh(const ObjectDesc& o);
+// The same for a mesh file, with the first component of a vertex attribute of every triangle
+// primitive (glTF; mesh_io.h) into `values`, one per vertex of the result.
+bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values);
 // The object-space dicing of a tree's parts for object_trimesh: the stress bark's preprocess
 // edge_length when set, else with growth the growth's edge_length band's maximum / 1.5, else a
 // hundredth of the trunk's circumference.

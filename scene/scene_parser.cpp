@@ -438,7 +438,12 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
         bo.fail("model", "the strip model needs a tree object (generalized cylinders); on meshes use \"stress\"");
       d.stress_bark = std::make_shared<StressBarkDesc>(parse_stress_bark(b->object(), c.base_dir.string(), scene.render.seed));
     }
-    if (auto g = o.get("growth")) d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object(), c.base_dir.string()));
+    if (auto g = o.get("growth")) {
+      d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object(), c.base_dir.string()));
+      if (d.procedural && d.growth->speed_map && !d.growth->speed_map->attribute.empty())
+        throw UserError(c.file, d.growth->where.path + "/speed_map/attribute",
+                        "a vertex attribute comes from a mesh file; a procedural mesh has none (paint an image \"file\")");
+    }
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
     d.tree = parse_tree(c, o, scene.render.seed, &d.stress_bark);
@@ -449,6 +454,9 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
             "a growing tree takes stress bark (\"model\": \"stress\") or none; the strip model's bark lives on the "
             "tree's cylinders, which do not grow");
       d.growth = std::make_shared<GrowthDesc>(parse_growth(g->object(), c.base_dir.string()));
+      if (d.growth->speed_map && !d.growth->speed_map->attribute.empty())
+        throw UserError(c.file, d.growth->where.path + "/speed_map/attribute",
+                        "a vertex attribute comes from a mesh file; a tree has none (paint an image \"file\")");
     }
   } else {
     o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, mesh, tree");

@@ -15,13 +15,17 @@ struct MeshData {
   std::vector<Vec4f> tangents;      // #V or empty: xyz tangent along +u, w = bitangent sign
   std::vector<Vec4f> params;        // #V or empty: (u, v) ∈ [0,1]² of a diced parametric surface (bark lookups)
   std::vector<float> displacement;  // #V or empty (diced surfaces only): offset along the base normal, m
+  // #V or empty: a grown surface's texture cell levels along u and v (bark/growth/texture_cells.h):
+  // its textures repeat 2^level times over the same UVs, so their cells keep their size.
+  std::vector<Vec2f> texture_levels;
   std::vector<uint32_t> indices;    // #F×3, counter-clockwise seen from the front
   int material = -1;                // index into the render scene's materials; -1: object's
 
   size_t triangle_count() const { return indices.size() / 3; }
   size_t memory_bytes() const {
     return positions.capacity() * sizeof(Vec3f) + normals.capacity() * sizeof(Vec3f) + uvs.capacity() * sizeof(Vec2f) +
-           params.capacity() * sizeof(Vec4f) + displacement.capacity() * sizeof(float) + tangents.capacity() * sizeof(Vec4f) +
+           params.capacity() * sizeof(Vec4f) + displacement.capacity() * sizeof(float) +
+           texture_levels.capacity() * sizeof(Vec2f) + tangents.capacity() * sizeof(Vec4f) +
            indices.capacity() * sizeof(uint32_t);
   }
 };

@@ -312,6 +312,7 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
   m.material = base.material;
   m.positions.resize(verts.size());
   if (!base.uvs.empty()) m.uvs.resize(verts.size());
+  if (!base.texture_levels.empty()) m.texture_levels.resize(verts.size());
   if (keep_params) m.params.resize(verts.size());
   m.displacement.resize(verts.size());
   std::vector<Vec3f> flat(verts.size()), smooth(verts.size());  // the grid undisplaced, for the normals below
@@ -321,6 +322,9 @@ MeshData dice(const MeshData& base, const SurfaceDisplacementFn& disp, const Dic
     flat[k] = o.bary[0] * base.positions[o.a] + o.bary[1] * base.positions[o.b] + o.bary[2] * base.positions[o.c];
     smooth[k] = (o.bary[0] * base.normals[o.a] + o.bary[1] * base.normals[o.b] + o.bary[2] * base.normals[o.c]).normalized();
     if (!base.uvs.empty()) m.uvs[k] = o.bary[0] * base.uvs[o.a] + o.bary[1] * base.uvs[o.b] + o.bary[2] * base.uvs[o.c];
+    if (!base.texture_levels.empty())
+      m.texture_levels[k] = o.bary[0] * base.texture_levels[o.a] + o.bary[1] * base.texture_levels[o.b] +
+                            o.bary[2] * base.texture_levels[o.c];
   });
   m.indices = std::move(indices);
   // Shading normals: the displaced grid's normal, carried from the flat base triangle onto the
