@@ -20,6 +20,11 @@ bark::GrowthStroke parse_stroke(JsonObject o) {
   s.point = o.vec3("point");
   if (auto v = o.get("radius")) s.radius = v->positive();
   if (auto v = o.get("value")) s.value = in_range(*v, -1, 1000, "value must lie in [-1, 1000] (added to the speed factor; -1 stops growth at the point)");
+  if (auto v = o.get("direction")) {
+    const Vec3f d = v->vec3();
+    if (!(d.norm() > 1e-6f) || !d.allFinite()) v->fail("direction must be a non-zero vector (where the stroke turns the growth to)");
+    s.direction = d.normalized();
+  }
   o.finish();
   return s;
 }

@@ -8,7 +8,7 @@
 //     "weibull_c": 2,                  // the species parameter c, (0, 20]
 //     "thickness": 0.05,               // m: the total thickening S(∞) = 1 maps to
 //     "eccentricity": 0.2, "eccentricity_direction": [0, 1, 0],   // Eq. (3)
-//     "strokes": [{"point": [x, y, z], "radius": 0.05, "value": 1}],  // sec. 4.4
+//     "strokes": [{"point": [x, y, z], "radius": 0.05, "value": 1, "direction": [x, y, z]}],  // sec. 4.4
 //     "speed_map": {"file": "paint.png", "scale": 1},   // sec. 4.4: speed × scale × map(uv)
 //                  or {"attribute": "COLOR_0"}      // ... × a glTF mesh's vertex attribute (first component)
 //     "obstacles": ["wire"],           // names of other mesh or sphere objects

@@ -155,7 +155,7 @@ bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone
   for (auto it = ab.rbegin(); it != ab.rend(); ++it) adj.erase_tet(c, *it);  // last first: indices stay valid
   if (x != keep_at && !c.uv.empty()) {
     const double s = (x - keep_at).norm() / std::max(1e-300, (c.points[gone] - keep_at).norm());
-    c.uv[keep] = (1 - s) * c.uv[keep] + s * c.uv[gone];
+    c.uv[keep] = TetComplex::uv_between(c.uv[keep], c.uv[gone], s);
   }
   c.on_interface[gone] = 0;
   return true;

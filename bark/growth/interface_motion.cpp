@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "bark/growth/tet_flips.h"
+#include "bark/growth/texture_transport.h"
 
 namespace phellem::bark {
 
@@ -133,12 +134,21 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
   // vertex, evaluated in parallel).
   std::vector<Eigen::Vector3d> target(movers.size());
   std::vector<uint8_t> active(movers.size(), 0);
+  const bool turned = growth.has_directions();
+  // Sec. 4.6: with growth turned off the normal, vertices slide, and their UVs move through
+  // the texture Jacobian taken before the motion.
+  const std::vector<TextureGradient> gradients =
+      turned && !c.uv.empty() ? texture_gradients(c.points, c.uv, faces) : std::vector<TextureGradient>{};
   tbb::parallel_for(size_t(0), movers.size(), [&](size_t i) {
     const uint32_t v = movers[i];
     // Sec. 4.4: a painted speed map scales the growth where it is painted.
     const double d = growth.thickening(t0, t1, c.points[v].cast<float>(), normals[v].cast<float>()) *
                      (c.speed.empty() ? 1.0 : double(c.speed[v]));
-    target[i] = c.points[v] + d * normals[v];
+    // Sec. 4.4: a stroke's direction turns the growth from the normal.
+    const Eigen::Vector3d dir = turned ? Eigen::Vector3d(growth.growth_direction(c.points[v].cast<float>(), normals[v].cast<float>())
+                                                             .cast<double>())
+                                       : normals[v];
+    target[i] = c.points[v] + d * dir;
     active[i] = d != 0 && std::isfinite(d);
   });
   const std::vector<Eigen::Vector3d> start = [&] {
@@ -174,6 +184,11 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     else
       ++st.shortened;
   }
+  if (!gradients.empty())
+    for (size_t i = 0; i < movers.size(); ++i) {
+      const uint32_t v = movers[i];
+      c.uv[v] = transported_uv(c.uv[v], gradients[v], c.points[v] - start[i], normals[v]);
+    }
   st.flips = fs.flips23 + fs.flips32 + fs.edge_removals;
   st.relocated = fs.relocated;
 

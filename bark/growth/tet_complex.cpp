@@ -8,6 +8,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -138,13 +139,20 @@ std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which) c
   return out;
 }
 
+Eigen::Vector2d TetComplex::uv_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double s) {
+  Eigen::Vector2d d = b - a;
+  d.x() -= std::round(d.x());
+  d.y() -= std::round(d.y());
+  return a + s * d;
+}
+
 uint32_t TetComplex::add_point_between(uint32_t a, uint32_t b, double s) {
   const uint32_t m = uint32_t(points.size());
   points.push_back((1 - s) * points[a] + s * points[b]);
   on_interface.push_back(on_interface[a] && on_interface[b]);
   on_box.push_back(on_box[a] && on_box[b]);
   frozen.push_back(frozen[a] && frozen[b]);
-  if (!uv.empty()) uv.push_back((1 - s) * uv[a] + s * uv[b]);
+  if (!uv.empty()) uv.push_back(uv_between(uv[a], uv[b], s));
   if (!speed.empty()) speed.push_back(float((1 - s) * double(speed[a]) + s * double(speed[b])));
   source_vertex.push_back(-1);
   if (!on_crack.empty()) on_crack.push_back(on_crack[a] && on_crack[b]);

@@ -58,6 +58,11 @@ struct TetComplex {
 
   static constexpr uint8_t kOutside = 0, kInside = 1, kObstacle = 2;
 
+  // The texture coordinates at parameter s from a's to b's: across a wrapped seam (a
+  // difference of more than half a period) the short way, so a point split or collapsed there
+  // gets a UV next to its neighbours' (possibly outside [0, 1]; textures repeat).
+  static Eigen::Vector2d uv_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double s);
+
   // Appends a point on the segment a–b at parameter s (0: a), interpolating the per-point
   // attributes (uv) and taking the flags both ends share, with a and b as its parents; returns
   // its index. Every change of

@@ -20,6 +20,31 @@ double GrowthFunction::eccentricity_factor(const Vec3f& n) const {
   return 1.0 + double(eccentricity) * double(n.dot(eccentricity_direction));  // Eq. (3)
 }
 
+bool GrowthFunction::has_directions() const {
+  for (const auto& s : strokes)
+    if (s.direction.squaredNorm() > 0) return true;
+  return false;
+}
+
+Vec3f GrowthFunction::growth_direction(const Vec3f& p, const Vec3f& n) const {
+  Vec3f d = n;
+  for (const auto& s : strokes) {
+    if (!(s.direction.squaredNorm() > 0)) continue;
+    const float w = std::exp(-(p - s.point).squaredNorm() / (2.0f * s.radius * s.radius));
+    const Vec3f t = (1 - w) * d + w * s.direction.normalized();
+    if (t.squaredNorm() > 1e-12f) d = t.normalized();
+  }
+  // Keep a share of the normal: d = cos·n + sin·(tangent) with cos ≥ kMinNormalShare.
+  const float along = d.dot(n);
+  if (along < kMinNormalShare) {
+    Vec3f tangent = d - along * n;
+    const float len = tangent.norm();
+    tangent = len > 1e-12f ? Vec3f(tangent / len) : Vec3f::Zero();
+    d = kMinNormalShare * n + std::sqrt(1 - kMinNormalShare * kMinNormalShare) * tangent;
+  }
+  return d;
+}
+
 double GrowthFunction::stroke_factor(const Vec3f& p) const {
   double f = 1.0;
   for (const auto& s : strokes) f += double(s.value) * std::exp(-double((p - s.point).squaredNorm()) / (2.0 * double(s.radius * s.radius)));

@@ -20,6 +20,9 @@ struct GrowthStroke {
   Vec3f point{0, 0, 0};
   float radius = 0.05f;  // m: the Gaussian's standard deviation
   float value = 1.0f;    // added to the speed factor at the point (−1 stops growth there)
+  // Sec. 4.4's dragged growth vectors: where the stroke reaches (its Gaussian weight w), the
+  // growth direction turns from the normal towards this one (unit; zero: the normal).
+  Vec3f direction{0, 0, 0};
 };
 
 struct GrowthFunction {
@@ -40,6 +43,13 @@ struct GrowthFunction {
   // Eq. (3)'s factor and the strokes' factor alone.
   double eccentricity_factor(const Vec3f& normal) const;
   double stroke_factor(const Vec3f& position) const;
+  // Sec. 4.4: the unit direction a point grows in: its normal, turned by each stroke with a
+  // direction towards that direction by the stroke's weight, (1 − w)·d + w·D normalized, in
+  // stroke order; never turned more than to kMinNormalShare of the normal (so the surface
+  // still moves outwards where it grows).
+  Vec3f growth_direction(const Vec3f& position, const Vec3f& normal) const;
+  bool has_directions() const;
+  static constexpr float kMinNormalShare = 0.2f;
 };
 
 }  // namespace phellem::bark

@@ -44,6 +44,10 @@ TEST(CambialGrowthCli, BadGrowthBlocksAreRefusedAtTheirJsonPath) {
       {R"({"steps": 2})", "trunk", "", "/objects/0/growth", "must be closed"},
       {R"({"crack_iterations": -1})", "log", "", "/objects/0/growth/crack_iterations", ""},
       {R"({"stretch_stress": -1})", "log", "", "/objects/0/growth/stretch_stress", "stretch_stress must lie in [0, 1e6]"},
+      {R"({"strokes": [{"point": [0, 0, 0], "direction": [0, 0, 0]}]})", "log", "", "/objects/0/growth/strokes/0/direction",
+       "direction must be a non-zero vector"},
+      {R"({"speed_map": {"attribute": "COLOR_0"}})", "log", "", "/objects/0/growth/speed_map/attribute", "procedural mesh has none"},
+      {R"({"texture_cells": 1})", "log", "", "/objects/0/growth/texture_cells", ""},
       {R"({"steps": 2, "obstacles": ["s"]})", "log", R"(, {"type": "sphere", "name": "s", "center": [0.1, 0.15, 0], "radius": 0.05})",
        "/objects/0/growth/obstacles/0", "intersects"},
   };
@@ -72,7 +76,7 @@ TEST(CambialGrowthCli, AGrowthTooLargeForTheMemoryIsRefusedBeforeTetGenRuns) {
   const std::string dir = test::temp_dir("cambial_growth_memory");
   const std::string scene = dir + "/scene.json";
   test::write_text(scene, log_scene(R"({"thickness": 100, "steps": 10})"));
-  for (const std::string command : {"simulate " + scene + " -o " + dir + "/out", "slice " + scene + " -o " + dir + "/s.png"}) {
+  for (const std::string& command : {"simulate " + scene + " -o " + dir + "/out", "slice " + scene + " -o " + dir + "/s.png"}) {
     const auto r = test::run_phellem_limited(command + " --quiet", 8192, 60);
     EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.output;
     EXPECT_EQ(r.output.rfind("phellem: error: " + scene + ": /objects/0/growth/edge_length: needs about ", 0), 0u) << r.output;
