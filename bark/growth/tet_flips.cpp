@@ -25,7 +25,28 @@ double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, cons
   return tet_quality(at(c, t[0], probe), at(c, t[1], probe), at(c, t[2], probe), at(c, t[3], probe));
 }
 
+namespace {
+
+// flip_23 and remove_edge; with `apply` false a dry run that changes nothing and tells whether
+// the operation would be made (the same decision, the same reads).
+bool flip_23_or_test(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats, bool apply);
+bool remove_edge_or_test(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
+                         int max_ring, bool apply);
+
+}  // namespace
+
 bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats) {
+  return flip_23_or_test(c, adj, t, f, probe, stats, true);
+}
+
+bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
+                 int max_ring) {
+  return remove_edge_or_test(c, adj, a, b, probe, stats, max_ring, true);
+}
+
+namespace {
+
+bool flip_23_or_test(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats, bool apply) {
   if (c.label[t] != TetComplex::kOutside) return false;
   const long ul = adj.across(c, t, f);
   if (ul < 0 || c.label[size_t(ul)] != TetComplex::kOutside) return false;
@@ -55,6 +76,7 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
   if (!(after > before + kGain)) return false;
   for (const auto& m : made)
     if (!positive_tet(c, m)) return false;
+  if (!apply) return true;
   adj.set_tet(c, t, made[0]);
   adj.set_tet(c, u, made[1]);
   adj.add_tet(c, made[2], TetComplex::kOutside);
@@ -62,12 +84,16 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
   return true;
 }
 
+}  // namespace
+
 bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats) {
   return remove_edge(c, adj, a, b, probe, stats, 3);
 }
 
-bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
-                 int max_ring) {
+namespace {
+
+bool remove_edge_or_test(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
+                         int max_ring, bool apply) {
   // Scratch buffers kept per thread: a step tries this hundreds of thousands of times.
   thread_local std::vector<uint32_t> around_ab, ring, ring_tet, distinct, slots;
   thread_local std::vector<std::array<uint32_t, 2>> links;
@@ -147,6 +173,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
     best_made = made;
   }
   if (best_made.empty()) return false;
+  if (!apply) return true;
   // n old slots for 2(n − 2) new tetrahedra: reuse, then append or erase.
   slots = around_ab;
   std::sort(slots.begin(), slots.end());
@@ -160,6 +187,8 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
     ++stats.edge_removals;
   return true;
 }
+
+}  // namespace
 
 bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Probe& probe, FlipStats& stats) {
   if (!free_vertex(c, adj, v) || v == probe.v) return false;
@@ -293,12 +322,14 @@ class FailedOps {
 
 // Flips and relocations that improve tetrahedron t (its faces, its edges, its free vertices);
 // with max_length > 0, a split of its longest edge not between interface points if longer.
+// With `apply` false (no `failed` memo then), a dry run: changes nothing and tells whether it
+// would have changed anything (a relocation is reported as possible without being tried).
 bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& probe, FlipStats& stats, int skip_corner,
-                 double max_length, bool relocate, int max_ring, FailedOps* failed = nullptr) {
+                 double max_length, bool relocate, int max_ring, FailedOps* failed = nullptr, bool apply = true) {
   const std::array<uint32_t, 4> T = c.tets[t];
   auto attempt = [&](const FailedOps::Key& key, auto&& op) { return failed ? failed->attempt(key, stats, op) : op(); };
   auto edge_removal = [&](uint32_t a, uint32_t b) {
-    return attempt({0, a, b}, [&] { return remove_edge(c, adj, a, b, probe, stats, max_ring); });
+    return attempt({0, a, b}, [&] { return remove_edge_or_test(c, adj, a, b, probe, stats, max_ring, apply); });
   };
   // 3-2 flips of its edges (opposite skip_corner first when blocked). Flips are among outside
   // tetrahedra only, and t is one of those around each of its edges and faces: for any other
@@ -311,7 +342,7 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   }
   for (int f = 0; f < 4; ++f) {
     if (!outside || (skip_corner >= 0 && f != skip_corner)) continue;
-    if (attempt({1, t, uint32_t(f)}, [&] { return flip_23(c, adj, t, f, probe, stats); })) return true;
+    if (attempt({1, t, uint32_t(f)}, [&] { return flip_23_or_test(c, adj, t, f, probe, stats, apply); })) return true;
   }
   if (outside && skip_corner >= 0)
     for (const auto& e : kEdge)
@@ -330,11 +361,13 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
       }
     }
     if (best >= 0) {
+      if (!apply) return true;
       split_free_edge(c, adj, T[size_t(kEdge[best][0])], T[size_t(kEdge[best][1])], stats);
       return true;
     }
   }
   if (!relocate) return false;
+  if (!apply) return true;
   bool moved = false;
   for (int i = 0; i < 4; ++i) {
     if (i == skip_corner) continue;
@@ -386,6 +419,9 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
   FlipStats stats;
   const Probe none;
   std::vector<uint8_t> dirty(c.points.size(), 0);
+  std::vector<uint8_t> listed(c.points.size(), 0);  // 1 at the given points
+  for (uint32_t p : points)
+    if (p < listed.size()) listed[p] = 1;
   for (int pass = 0; pass < passes; ++pass) {
     // The poor outside tetrahedra at the points (in the first pass all of them, afterwards only
     // those at points the previous pass changed), each once: from its smallest listed corner.
@@ -400,7 +436,7 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
           if (c.label[t] != TetComplex::kOutside) continue;
           bool first = true, near_change = pass == 0;
           for (uint32_t w : c.tets[t]) {
-            if (w < p && std::binary_search(points.begin(), points.end(), w)) first = false;
+            if (w < p && w < listed.size() && listed[w]) first = false;
             near_change = near_change || w >= dirty.size() || dirty[w];
           }
           if (!first || !near_change) continue;
@@ -424,8 +460,28 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
     } else {
       std::sort(bad.begin(), bad.end());
     }
+    // Most poor tetrahedra cannot be improved. Whether each could is decided first, in
+    // parallel, by a dry run on the complex as it is now; the worst-first loop then skips a
+    // tetrahedron the dry run refused while none of its corners' tetrahedra has changed since
+    // (every read of flips and free splits is of tetrahedra at its corners and of positions,
+    // which they do not move: it would refuse again), and makes or tries the rest as before.
+    // The same result as trying each in turn, whatever the thread count.
+    std::vector<uint8_t> may_improve(bad.size(), 1);
+    if (!relocate)
+      tbb::parallel_for(size_t(0), bad.size(), [&](size_t i) {
+        const long t = find_tet(c, adj, bad[i].second);
+        FlipStats unused;
+        may_improve[i] = t >= 0 && improve_tet(c, adj, uint32_t(t), none, unused, -1, max_length, false, 3, nullptr, false);
+      });
+    std::vector<uint8_t> touched(c.points.size(), 0);
+    adj.watch(&touched);
+    auto untouched = [&](const std::array<uint32_t, 4>& corners) {
+      return std::none_of(corners.begin(), corners.end(), [&](uint32_t w) { return w < touched.size() && touched[w]; });
+    };
     bool any = false;
-    for (const auto& [q, corners] : bad) {
+    for (size_t i = 0; i < bad.size(); ++i) {
+      const auto& corners = bad[i].second;
+      if (!may_improve[i] && untouched(corners)) continue;
       const long t = find_tet(c, adj, corners);
       if (t < 0) continue;
       if (improve_tet(c, adj, uint32_t(t), none, stats, -1, max_length, relocate, 3)) {
@@ -434,6 +490,7 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
           if (w < dirty.size()) dirty[w] = 1;
       }
     }
+    adj.watch(nullptr);
     if (!any) break;
   }
   return stats;
