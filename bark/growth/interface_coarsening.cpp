@@ -236,16 +236,46 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
           if (stamp[w] >= f) return true;
     return false;
   };
-  long made_total = 0;
+  using Edge = std::tuple<double, uint32_t, uint32_t>;  // length, a < b
+  auto edge = [&](uint32_t a, uint32_t b) -> Edge {
+    if (a > b) std::swap(a, b);
+    return {(c.points[a] - c.points[b]).norm(), a, b};
+  };
+  std::vector<Edge> todo;         // the short interface edges, shortest first
+  std::vector<uint32_t> stamped;  // the points the last pass stamped (with repeats)
+  std::vector<uint32_t> ring;
+  long made_total = 0, last_first = 0;  // collapses made; the number of the last pass's first
   for (int pass = 0; pass < 8; ++pass) {
-    std::vector<std::tuple<double, uint32_t, uint32_t>> todo;
-    for (const auto& f : interface_faces(c, adj))
-      for (int e = 0; e < 3; ++e) {
-        const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3];
-        if (a > b) continue;  // each edge once: a closed oriented interface uses it once each way
-        const double len = (c.points[a] - c.points[b]).norm();
-        if (len < min_length) todo.push_back({len, a, b});
+    if (pass == 0) {
+      for (const auto& f : interface_faces(c, adj))
+        for (int e = 0; e < 3; ++e) {
+          const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3];
+          if (a > b) continue;  // each edge once: a closed oriented interface uses it once each way
+          const Edge x = edge(a, b);
+          if (std::get<0>(x) < min_length) todo.push_back(x);
+        }
+    } else {
+      // The last pass changed only tetrahedra all of whose corners it stamped, and moved only
+      // stamped points: an edge with neither end stamped is as it was (still short, still on
+      // the interface), and every other short interface edge has a stamped end, at which it is
+      // found again. The same edges as a new scan of the interface, without the scan.
+      std::vector<Edge> next;
+      for (const Edge& x : todo)
+        if (stamp[std::get<1>(x)] < last_first && stamp[std::get<2>(x)] < last_first) next.push_back(x);
+      sort_unique(stamped);
+      for (uint32_t v : stamped) {
+        if (!c.on_interface[v]) continue;
+        interface_neighbours(c, adj, v, ring);
+        for (uint32_t w : ring) {
+          if (w < v && stamp[w] >= last_first) continue;  // found from w, the smaller stamped end
+          const Edge x = edge(v, w);
+          if (std::get<0>(x) < min_length) next.push_back(x);
+        }
       }
+      stamped.clear();
+      todo = std::move(next);
+    }
+    last_first = made_total;
     if (todo.empty()) break;
     std::sort(todo.begin(), todo.end());
     long made = 0;
@@ -260,6 +290,7 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
         ++made;
         gather(a, b);
         for (uint32_t w : corners) stamp[w] = made_total;
+        stamped.insert(stamped.end(), corners.begin(), corners.end());
         ++made_total;
       } else {
         failed_at[key] = made_total;
