@@ -208,9 +208,13 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     }
     const Eigen::Vector3d from = c.points[v];
     c.points[v] = from + 0.5 * (mean / n - from);
-    double after = 1e300;
-    for (uint32_t t : around) after = std::min(after, tet_quality(c, c.tets[t]));
-    if (after >= before && all_positive(c, around))
+    bool kept = true;  // no tetrahedron below the worst before (stops at the first that is)
+    for (uint32_t t : around)
+      if (tet_quality(c, c.tets[t]) < before) {
+        kept = false;
+        break;
+      }
+    if (kept && all_positive(c, around))
       ++st.smoothed;
     else
       c.points[v] = from;
