@@ -110,9 +110,10 @@ bool link_condition(const TetComplex& c, const TetAdjacency& adj, uint32_t a, ui
   return !intersects(fa, fb);
 }
 
-// Removes `gone` into `keep` placed at x, if every condition holds.
-bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone, const Eigen::Vector3d& x,
-                  const std::vector<uint32_t>& ab, double max_length) {
+// Whether `gone` may be removed into `keep` placed at x: no interface edge too long, every
+// tetrahedron left positive, the quality kept. Changes nothing.
+bool collapse_keeps_shape(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone, const Eigen::Vector3d& x,
+                          const std::vector<uint32_t>& ab, double max_length) {
   const Eigen::Vector3d keep_at = c.points[keep];
   // No interface edge may come out longer than the band's upper bound (the splits would undo
   // the collapse).
@@ -141,10 +142,15 @@ bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone
   }
   // Not much worse than before: at least a fair quality or as good as the worst it replaces.
   ok = ok && (after >= 0.1 || after >= before);
-  if (!ok) {
-    c.points[keep] = keep_at;
-    return false;
-  }
+  c.points[keep] = keep_at;
+  return ok;
+}
+
+// Removes `gone` into `keep` placed at x (collapse_keeps_shape holds).
+void collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone, const Eigen::Vector3d& x,
+              const std::vector<uint32_t>& ab) {
+  const Eigen::Vector3d keep_at = c.points[keep];
+  c.points[keep] = x;
   const std::vector<uint32_t> moved(adj.around(gone).begin(), adj.around(gone).end());
   for (uint32_t t : moved) {
     if (std::binary_search(ab.begin(), ab.end(), t)) continue;
@@ -158,7 +164,6 @@ bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone
     c.uv[keep] = (1 - s) * c.uv[keep] + s * c.uv[gone];
   }
   c.on_interface[gone] = 0;
-  return true;
 }
 
 }  // namespace
@@ -187,6 +192,24 @@ bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint3
   }
   sort_unique(apex);
   if (apex.size() != 2) return false;
+  // Which end goes: never a fixed one; else the one the refinement added (no input vertex),
+  // else the later one. Up to three ways, the first whose shape holds is made: at the edge's
+  // midpoint, at the kept end, the other end kept. Those are decided first (most short edges
+  // fail there), then the topology.
+  uint32_t keep = a, gone = b;
+  if (fixed(b) || (c.source_vertex[b] >= 0 && c.source_vertex[a] < 0)) std::swap(keep, gone);
+  const Eigen::Vector3d mid = 0.5 * (c.points[a] + c.points[b]);
+  Eigen::Vector3d x;
+  if (!fixed(keep) && collapse_keeps_shape(c, adj, keep, gone, mid, ab, max_length))
+    x = mid;
+  else if (collapse_keeps_shape(c, adj, keep, gone, c.points[keep], ab, max_length))
+    x = c.points[keep];
+  else if (!fixed(gone) && !fixed(keep) && collapse_keeps_shape(c, adj, gone, keep, c.points[gone], ab, max_length)) {
+    std::swap(keep, gone);
+    x = c.points[keep];
+  } else {
+    return false;
+  }
   // The interface's link condition: a and b share exactly p and q, and neither a–p–q nor
   // b–p–q is a face (the interface is not a tetrahedron's four faces).
   std::vector<uint32_t> na, nb, common;
@@ -196,18 +219,8 @@ bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint3
   if (common != apex) return false;
   if (is_interface_face(c, adj, a, apex[0], apex[1]) || is_interface_face(c, adj, b, apex[0], apex[1])) return false;
   if (!link_condition(c, adj, a, b, ab)) return false;
-  // Which end goes: never a fixed one; else the one the refinement added (no input vertex),
-  // else the later one.
-  uint32_t keep = a, gone = b;
-  if (fixed(b) || (c.source_vertex[b] >= 0 && c.source_vertex[a] < 0)) std::swap(keep, gone);
-  const Eigen::Vector3d mid = 0.5 * (c.points[a] + c.points[b]);
-  if (!fixed(keep) && try_collapse(c, adj, keep, gone, mid, ab, max_length)) return true;
-  if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
-  if (!fixed(gone) && !fixed(keep)) {
-    std::swap(keep, gone);
-    if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
-  }
-  return false;
+  collapse(c, adj, keep, gone, x, ab);
+  return true;
 }
 
 long collapse_short_interface_edges(TetComplex& c, double min_length, double max_length) {
