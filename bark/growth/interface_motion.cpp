@@ -3,7 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "bark/growth/tet_flips.h"
@@ -192,8 +191,6 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
       for (uint32_t t : adj.around(v))
         for (uint32_t w : c.tets[t])
           if (!c.on_interface[w] && !ring[w]) ring[w] = 2;
-  std::vector<std::array<Eigen::Vector3d, 4>> corner;
-  std::vector<uint8_t> slot;
   for (uint32_t v = 0; v < c.points.size(); ++v) {
     if (!ring[v] || c.on_box[v] || c.frozen[v]) continue;
     const auto around = adj.around(v);
@@ -201,33 +198,22 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     int n = 0;
     double before = 1e300;
-    corner.resize(around.size());  // the tetrahedra's corners, read once
-    slot.resize(around.size());
-    for (size_t i = 0; i < around.size(); ++i) {
-      const auto& T = c.tets[around[i]];
-      for (size_t j = 0; j < 4; ++j) {
-        corner[i][j] = c.points[T[j]];
-        if (T[j] == v) slot[i] = uint8_t(j);
-      }
-      before = std::min(before, tet_quality(corner[i][0], corner[i][1], corner[i][2], corner[i][3]));
-      for (size_t j = 0; j < 4; ++j)
-        if (T[j] != v) {
-          mean += corner[i][j];
+    for (uint32_t t : around) {
+      before = std::min(before, tet_quality(c, c.tets[t]));
+      for (uint32_t w : c.tets[t])
+        if (w != v) {
+          mean += c.points[w];
           ++n;
         }
     }
     const Eigen::Vector3d from = c.points[v];
-    const Eigen::Vector3d to = from + 0.5 * (mean / n - from);
+    c.points[v] = from + 0.5 * (mean / n - from);
     bool kept = true;  // no tetrahedron below the worst before (stops at the first that is)
-    for (size_t i = 0; i < around.size(); ++i) {
-      std::array<Eigen::Vector3d, 4> q = corner[i];
-      q[slot[i]] = to;
-      if (tet_quality(q[0], q[1], q[2], q[3]) < before) {
+    for (uint32_t t : around)
+      if (tet_quality(c, c.tets[t]) < before) {
         kept = false;
         break;
       }
-    }
-    c.points[v] = to;
     if (kept && all_positive(c, around))
       ++st.smoothed;
     else

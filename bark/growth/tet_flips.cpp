@@ -197,38 +197,26 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
   // soon as one is at or below `floor`, which is all a candidate that must beat it needs.
   // The tetrahedron that stopped the last candidate is tried first (a free vertex of the coarse
   // outside has a hundred tetrahedra, and the same one usually stops every candidate).
-  // The corners of v's tetrahedra as the probe sees them, gathered once (each candidate
-  // replaces v's slot): the same qualities as probe_quality with v moved, without walking the
-  // complex for every candidate.
-  thread_local std::vector<std::array<Eigen::Vector3d, 4>> corner;
-  thread_local std::vector<uint8_t> slot;
-  corner.resize(tets.size());
-  slot.resize(tets.size());
-  for (size_t i = 0; i < tets.size(); ++i) {
-    const auto& T = c.tets[tets[i]];
-    for (size_t j = 0; j < 4; ++j) {
-      corner[i][j] = at(c, T[j], probe);
-      if (T[j] == v) slot[i] = uint8_t(j);
-    }
-  }
-  auto quality_at = [&](size_t i, const Eigen::Vector3d& x) {
-    std::array<Eigen::Vector3d, 4> q = corner[i];
-    q[slot[i]] = x;
-    return tet_quality(q[0], q[1], q[2], q[3]);
-  };
   size_t first = 0;
   auto worst_at = [&](const Eigen::Vector3d& x, uint32_t* worst_tet, double floor) {
+    Probe p = probe;
+    const Eigen::Vector3d keep = c.points[v];
+    c.points[v] = x;
     if (!worst_tet) {
-      const double q0 = quality_at(first, x);
-      if (q0 <= floor) return q0;
+      const double q0 = probe_quality(c, c.tets[tets[first]], p);
+      if (q0 <= floor) {
+        c.points[v] = keep;
+        return q0;
+      }
     }
     double q = 1e300;
     for (size_t i = 0; i < tets.size(); ++i) {
-      const double qt = quality_at(i, x);
+      const uint32_t t = tets[i];
+      const double qt = probe_quality(c, c.tets[t], p);
       if (qt < q) {
         q = qt;
         if (worst_tet) {
-          *worst_tet = tets[i];
+          *worst_tet = t;
           first = i;
         }
         if (q <= floor) {
@@ -237,6 +225,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
         }
       }
     }
+    c.points[v] = keep;
     return q;
   };
   const Eigen::Vector3d start = c.points[v];
