@@ -242,7 +242,15 @@ ContactStats freeze_contacts(TetComplex& c, const std::vector<std::array<uint32_
       std::vector<uint32_t> near;
       bool near_known = false;
       uint8_t d = kNone;
+      const auto ring = adjacent[v];
+      auto at_or_next_to_v = [&](const std::array<uint32_t, 3>& f) {
+        return std::any_of(f.begin(), f.end(), [&](uint32_t w) { return w == v || std::binary_search(ring.begin(), ring.end(), w); });
+      };
       for (uint32_t i : ids) {
+        // An interface face at v or at a neighbour of v has a corner near v along the interface
+        // (near_along_interface always holds v and its 2-ring): it can never freeze v, so it is
+        // not measured (these are most of the faces a query finds).
+        if (!is_obstacle[i] && at_or_next_to_v(corners[i])) continue;
         const FaceGrid::Box& b = boxes[i];
         if (b[0].x() > hi.x() || b[1].x() < lo.x() || b[0].y() > hi.y() || b[1].y() < lo.y() || b[0].z() > hi.z() ||
             b[1].z() < lo.z())
