@@ -229,6 +229,17 @@ long collapse_short_interface_edges(TetComplex& c, double min_length, double max
 }
 
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length, double max_length) {
+  std::vector<std::array<uint32_t, 2>> edges;
+  for (const auto& f : interface_faces(c, adj))
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3];
+      if (a < b) edges.push_back({a, b});  // each edge once: a closed oriented interface uses it once each way
+    }
+  return collapse_short_interface_edges(c, adj, edges, min_length, max_length);
+}
+
+long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 2>>& edges,
+                                    double min_length, double max_length) {
   long collapses = 0;
   // A collapse of a–b reads only the tetrahedra around a and b (corners, positions, flags) and
   // those sharing a face with them (labels). Collapse number n stamps n on every corner of
@@ -260,13 +271,10 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
   long made_total = 0, last_first = 0;  // collapses made; the number of the last pass's first
   for (int pass = 0; pass < 8; ++pass) {
     if (pass == 0) {
-      for (const auto& f : interface_faces(c, adj))
-        for (int e = 0; e < 3; ++e) {
-          const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3];
-          if (a > b) continue;  // each edge once: a closed oriented interface uses it once each way
-          const Edge x = edge(a, b);
-          if (std::get<0>(x) < min_length) todo.push_back(x);
-        }
+      for (const auto& [a, b] : edges) {
+        const Edge x = edge(a, b);
+        if (std::get<0>(x) < min_length) todo.push_back(x);
+      }
     } else {
       // The last pass changed only tetrahedra all of whose corners it stamped, and moved only
       // stamped points: an edge with neither end stamped is as it was (still short, still on
