@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
 #include <tuple>
 
 namespace phellem::bark {
@@ -25,28 +26,7 @@ double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, cons
   return tet_quality(at(c, t[0], probe), at(c, t[1], probe), at(c, t[2], probe), at(c, t[3], probe));
 }
 
-namespace {
-
-// flip_23 and remove_edge; with `apply` false a dry run that changes nothing and tells whether
-// the operation would be made (the same decision, the same reads).
-bool flip_23_or_test(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats, bool apply);
-bool remove_edge_or_test(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
-                         int max_ring, bool apply);
-
-}  // namespace
-
 bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats) {
-  return flip_23_or_test(c, adj, t, f, probe, stats, true);
-}
-
-bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
-                 int max_ring) {
-  return remove_edge_or_test(c, adj, a, b, probe, stats, max_ring, true);
-}
-
-namespace {
-
-bool flip_23_or_test(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats, bool apply) {
   if (c.label[t] != TetComplex::kOutside) return false;
   const long ul = adj.across(c, t, f);
   if (ul < 0 || c.label[size_t(ul)] != TetComplex::kOutside) return false;
@@ -76,7 +56,6 @@ bool flip_23_or_test(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const 
   if (!(after > before + kGain)) return false;
   for (const auto& m : made)
     if (!positive_tet(c, m)) return false;
-  if (!apply) return true;
   adj.set_tet(c, t, made[0]);
   adj.set_tet(c, u, made[1]);
   adj.add_tet(c, made[2], TetComplex::kOutside);
@@ -84,16 +63,12 @@ bool flip_23_or_test(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const 
   return true;
 }
 
-}  // namespace
-
 bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats) {
   return remove_edge(c, adj, a, b, probe, stats, 3);
 }
 
-namespace {
-
-bool remove_edge_or_test(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
-                         int max_ring, bool apply) {
+bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
+                 int max_ring) {
   // Scratch buffers kept per thread: a step tries this hundreds of thousands of times.
   thread_local std::vector<uint32_t> around_ab, ring, ring_tet, distinct, slots;
   thread_local std::vector<std::array<uint32_t, 2>> links;
@@ -173,7 +148,6 @@ bool remove_edge_or_test(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
     best_made = made;
   }
   if (best_made.empty()) return false;
-  if (!apply) return true;
   // n old slots for 2(n − 2) new tetrahedra: reuse, then append or erase.
   slots = around_ab;
   std::sort(slots.begin(), slots.end());
@@ -187,8 +161,6 @@ bool remove_edge_or_test(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
     ++stats.edge_removals;
   return true;
 }
-
-}  // namespace
 
 bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Probe& probe, FlipStats& stats) {
   if (!free_vertex(c, adj, v) || v == probe.v) return false;
@@ -322,14 +294,12 @@ class FailedOps {
 
 // Flips and relocations that improve tetrahedron t (its faces, its edges, its free vertices);
 // with max_length > 0, a split of its longest edge not between interface points if longer.
-// With `apply` false (no `failed` memo then), a dry run: changes nothing and tells whether it
-// would have changed anything (a relocation is reported as possible without being tried).
 bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& probe, FlipStats& stats, int skip_corner,
-                 double max_length, bool relocate, int max_ring, FailedOps* failed = nullptr, bool apply = true) {
+                 double max_length, bool relocate, int max_ring, FailedOps* failed = nullptr) {
   const std::array<uint32_t, 4> T = c.tets[t];
   auto attempt = [&](const FailedOps::Key& key, auto&& op) { return failed ? failed->attempt(key, stats, op) : op(); };
   auto edge_removal = [&](uint32_t a, uint32_t b) {
-    return attempt({0, a, b}, [&] { return remove_edge_or_test(c, adj, a, b, probe, stats, max_ring, apply); });
+    return attempt({0, a, b}, [&] { return remove_edge(c, adj, a, b, probe, stats, max_ring); });
   };
   // 3-2 flips of its edges (opposite skip_corner first when blocked). Flips are among outside
   // tetrahedra only, and t is one of those around each of its edges and faces: for any other
@@ -342,7 +312,7 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   }
   for (int f = 0; f < 4; ++f) {
     if (!outside || (skip_corner >= 0 && f != skip_corner)) continue;
-    if (attempt({1, t, uint32_t(f)}, [&] { return flip_23_or_test(c, adj, t, f, probe, stats, apply); })) return true;
+    if (attempt({1, t, uint32_t(f)}, [&] { return flip_23(c, adj, t, f, probe, stats); })) return true;
   }
   if (outside && skip_corner >= 0)
     for (const auto& e : kEdge)
@@ -361,13 +331,11 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
       }
     }
     if (best >= 0) {
-      if (!apply) return true;
       split_free_edge(c, adj, T[size_t(kEdge[best][0])], T[size_t(kEdge[best][1])], stats);
       return true;
     }
   }
   if (!relocate) return false;
-  if (!apply) return true;
   bool moved = false;
   for (int i = 0; i < 4; ++i) {
     if (i == skip_corner) continue;
@@ -419,34 +387,54 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
   FlipStats stats;
   const Probe none;
   std::vector<uint8_t> dirty(c.points.size(), 0);
+  std::vector<uint32_t> changed;                    // the points dirty marks (with repeats)
   std::vector<uint8_t> listed(c.points.size(), 0);  // 1 at the given points
   for (uint32_t p : points)
     if (p < listed.size()) listed[p] = 1;
   for (int pass = 0; pass < passes; ++pass) {
     // The poor outside tetrahedra at the points (in the first pass all of them, afterwards only
-    // those at points the previous pass changed), each once: from its smallest listed corner.
-    // Collected in fixed blocks of points in parallel, joined in order: deterministic.
-    constexpr size_t kBlock = 1024;
-    const size_t blocks = (points.size() + kBlock - 1) / kBlock;
-    std::vector<std::vector<std::pair<double, std::array<uint32_t, 4>>>> found(blocks);
-    tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
-      for (size_t k = b * kBlock; k < std::min(points.size(), (b + 1) * kBlock); ++k) {
-        const uint32_t p = points[k];
-        for (uint32_t t : adj.around(p)) {
-          if (c.label[t] != TetComplex::kOutside) continue;
-          bool first = true, near_change = pass == 0;
-          for (uint32_t w : c.tets[t]) {
-            if (w < p && w < listed.size() && listed[w]) first = false;
-            near_change = near_change || w >= dirty.size() || dirty[w];
-          }
-          if (!first || !near_change) continue;
-          const double q = tet_quality(c, c.tets[t]);
-          if (q < threshold) found[b].push_back({q, c.tets[t]});
-        }
-      }
-    });
+    // those with a corner the previous pass changed or made), each once: from its smallest
+    // listed corner.
+    auto smallest_listed = [&](const std::array<uint32_t, 4>& T) {
+      uint32_t s = std::numeric_limits<uint32_t>::max();
+      for (uint32_t w : T)
+        if (w < listed.size() && listed[w]) s = std::min(s, w);
+      return s;
+    };
     std::vector<std::pair<double, std::array<uint32_t, 4>>> bad;
-    for (const auto& f : found) bad.insert(bad.end(), f.begin(), f.end());
+    if (pass == 0) {
+      // Collected in fixed blocks of points in parallel, joined in order: deterministic.
+      constexpr size_t kBlock = 1024;
+      const size_t blocks = (points.size() + kBlock - 1) / kBlock;
+      std::vector<std::vector<std::pair<double, std::array<uint32_t, 4>>>> found(blocks);
+      tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+        for (size_t k = b * kBlock; k < std::min(points.size(), (b + 1) * kBlock); ++k) {
+          const uint32_t p = points[k];
+          for (uint32_t t : adj.around(p)) {
+            if (c.label[t] != TetComplex::kOutside || smallest_listed(c.tets[t]) != p) continue;
+            const double q = tet_quality(c, c.tets[t]);
+            if (q < threshold) found[b].push_back({q, c.tets[t]});
+          }
+        }
+      });
+      for (const auto& f : found) bad.insert(bad.end(), f.begin(), f.end());
+    } else {
+      // From the changed points and the new ones (few) rather than from every listed point:
+      // the same tetrahedra, each once (the order is the sort's below).
+      std::sort(changed.begin(), changed.end());
+      changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+      for (uint32_t m = uint32_t(dirty.size()); m < c.points.size(); ++m) changed.push_back(m);
+      for (uint32_t d : changed)
+        for (uint32_t t : adj.around(d)) {
+          if (c.label[t] != TetComplex::kOutside || smallest_listed(c.tets[t]) == std::numeric_limits<uint32_t>::max())
+            continue;
+          const double q = tet_quality(c, c.tets[t]);
+          if (q < threshold) bad.push_back({q, c.tets[t]});
+        }
+      std::sort(bad.begin(), bad.end());
+      bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+    }
+    changed.clear();
     std::fill(dirty.begin(), dirty.end(), 0);
     dirty.resize(c.points.size(), 0);
     if (bad.empty()) break;
@@ -460,37 +448,19 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
     } else {
       std::sort(bad.begin(), bad.end());
     }
-    // Most poor tetrahedra cannot be improved. Whether each could is decided first, in
-    // parallel, by a dry run on the complex as it is now; the worst-first loop then skips a
-    // tetrahedron the dry run refused while none of its corners' tetrahedra has changed since
-    // (every read of flips and free splits is of tetrahedra at its corners and of positions,
-    // which they do not move: it would refuse again), and makes or tries the rest as before.
-    // The same result as trying each in turn, whatever the thread count.
-    std::vector<uint8_t> may_improve(bad.size(), 1);
-    if (!relocate)
-      tbb::parallel_for(size_t(0), bad.size(), [&](size_t i) {
-        const long t = find_tet(c, adj, bad[i].second);
-        FlipStats unused;
-        may_improve[i] = t >= 0 && improve_tet(c, adj, uint32_t(t), none, unused, -1, max_length, false, 3, nullptr, false);
-      });
-    std::vector<uint8_t> touched(c.points.size(), 0);
-    adj.watch(&touched);
-    auto untouched = [&](const std::array<uint32_t, 4>& corners) {
-      return std::none_of(corners.begin(), corners.end(), [&](uint32_t w) { return w < touched.size() && touched[w]; });
-    };
     bool any = false;
-    for (size_t i = 0; i < bad.size(); ++i) {
-      const auto& corners = bad[i].second;
-      if (!may_improve[i] && untouched(corners)) continue;
+    for (const auto& [q, corners] : bad) {
       const long t = find_tet(c, adj, corners);
       if (t < 0) continue;
       if (improve_tet(c, adj, uint32_t(t), none, stats, -1, max_length, relocate, 3)) {
         any = true;
         for (uint32_t w : corners)
-          if (w < dirty.size()) dirty[w] = 1;
+          if (w < dirty.size()) {
+            dirty[w] = 1;
+            changed.push_back(w);
+          }
       }
     }
-    adj.watch(nullptr);
     if (!any) break;
   }
   return stats;
