@@ -19,8 +19,9 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_leng
 RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
                                double min_length, double max_length, const RepairSettings& settings) {
   RepairStats st;
-  st.splits = split_long_interface_edges(c, adj, faces, max_length);
-  st.collapses = collapse_short_interface_edges(c, adj, min_length, max_length);
+  std::vector<std::array<uint32_t, 2>> edges;  // the interface's edges after the splits
+  st.splits = split_long_interface_edges(c, adj, faces, max_length, edges);
+  st.collapses = collapse_short_interface_edges(c, adj, edges, min_length, max_length);
   std::vector<uint32_t> interface;
   for (uint32_t v = 0; v < c.points.size(); ++v)
     if (c.on_interface[v]) interface.push_back(v);

@@ -110,9 +110,10 @@ bool link_condition(const TetComplex& c, const TetAdjacency& adj, uint32_t a, ui
   return !intersects(fa, fb);
 }
 
-// Removes `gone` into `keep` placed at x, if every condition holds.
-bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone, const Eigen::Vector3d& x,
-                  const std::vector<uint32_t>& ab, double max_length) {
+// Whether `gone` may be removed into `keep` placed at x: no interface edge too long, every
+// tetrahedron left positive, the quality kept. Changes nothing.
+bool collapse_keeps_shape(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone, const Eigen::Vector3d& x,
+                          const std::vector<uint32_t>& ab, double max_length) {
   const Eigen::Vector3d keep_at = c.points[keep];
   // No interface edge may come out longer than the band's upper bound (the splits would undo
   // the collapse).
@@ -141,10 +142,15 @@ bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone
   }
   // Not much worse than before: at least a fair quality or as good as the worst it replaces.
   ok = ok && (after >= 0.1 || after >= before);
-  if (!ok) {
-    c.points[keep] = keep_at;
-    return false;
-  }
+  c.points[keep] = keep_at;
+  return ok;
+}
+
+// Removes `gone` into `keep` placed at x (collapse_keeps_shape holds).
+void collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone, const Eigen::Vector3d& x,
+              const std::vector<uint32_t>& ab) {
+  const Eigen::Vector3d keep_at = c.points[keep];
+  c.points[keep] = x;
   const std::vector<uint32_t> moved(adj.around(gone).begin(), adj.around(gone).end());
   for (uint32_t t : moved) {
     if (std::binary_search(ab.begin(), ab.end(), t)) continue;
@@ -158,7 +164,6 @@ bool try_collapse(TetComplex& c, TetAdjacency& adj, uint32_t keep, uint32_t gone
     c.uv[keep] = TetComplex::uv_between(c.uv[keep], c.uv[gone], s);
   }
   c.on_interface[gone] = 0;
-  return true;
 }
 
 }  // namespace
@@ -187,6 +192,24 @@ bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint3
   }
   sort_unique(apex);
   if (apex.size() != 2) return false;
+  // Which end goes: never a fixed one; else the one the refinement added (no input vertex),
+  // else the later one. Up to three ways, the first whose shape holds is made: at the edge's
+  // midpoint, at the kept end, the other end kept. Those are decided first (most short edges
+  // fail there), then the topology.
+  uint32_t keep = a, gone = b;
+  if (fixed(b) || (c.source_vertex[b] >= 0 && c.source_vertex[a] < 0)) std::swap(keep, gone);
+  const Eigen::Vector3d mid = 0.5 * (c.points[a] + c.points[b]);
+  Eigen::Vector3d x;
+  if (!fixed(keep) && collapse_keeps_shape(c, adj, keep, gone, mid, ab, max_length))
+    x = mid;
+  else if (collapse_keeps_shape(c, adj, keep, gone, c.points[keep], ab, max_length))
+    x = c.points[keep];
+  else if (!fixed(gone) && !fixed(keep) && collapse_keeps_shape(c, adj, gone, keep, c.points[gone], ab, max_length)) {
+    std::swap(keep, gone);
+    x = c.points[keep];
+  } else {
+    return false;
+  }
   // The interface's link condition: a and b share exactly p and q, and neither a–p–q nor
   // b–p–q is a face (the interface is not a tetrahedron's four faces).
   std::vector<uint32_t> na, nb, common;
@@ -196,18 +219,8 @@ bool collapse_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint3
   if (common != apex) return false;
   if (is_interface_face(c, adj, a, apex[0], apex[1]) || is_interface_face(c, adj, b, apex[0], apex[1])) return false;
   if (!link_condition(c, adj, a, b, ab)) return false;
-  // Which end goes: never a fixed one; else the one the refinement added (no input vertex),
-  // else the later one.
-  uint32_t keep = a, gone = b;
-  if (fixed(b) || (c.source_vertex[b] >= 0 && c.source_vertex[a] < 0)) std::swap(keep, gone);
-  const Eigen::Vector3d mid = 0.5 * (c.points[a] + c.points[b]);
-  if (!fixed(keep) && try_collapse(c, adj, keep, gone, mid, ab, max_length)) return true;
-  if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
-  if (!fixed(gone) && !fixed(keep)) {
-    std::swap(keep, gone);
-    if (try_collapse(c, adj, keep, gone, c.points[keep], ab, max_length)) return true;
-  }
-  return false;
+  collapse(c, adj, keep, gone, x, ab);
+  return true;
 }
 
 long collapse_short_interface_edges(TetComplex& c, double min_length, double max_length) {
@@ -216,6 +229,17 @@ long collapse_short_interface_edges(TetComplex& c, double min_length, double max
 }
 
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length, double max_length) {
+  std::vector<std::array<uint32_t, 2>> edges;
+  for (const auto& f : interface_faces(c, adj))
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3];
+      if (a < b) edges.push_back({a, b});  // each edge once: a closed oriented interface uses it once each way
+    }
+  return collapse_short_interface_edges(c, adj, edges, min_length, max_length);
+}
+
+long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 2>>& edges,
+                                    double min_length, double max_length) {
   long collapses = 0;
   // A collapse of a–b reads only the tetrahedra around a and b (corners, positions, flags) and
   // those sharing a face with them (labels). Collapse number n stamps n on every corner of
@@ -236,16 +260,43 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
           if (stamp[w] >= f) return true;
     return false;
   };
-  long made_total = 0;
+  using Edge = std::tuple<double, uint32_t, uint32_t>;  // length, a < b
+  auto edge = [&](uint32_t a, uint32_t b) -> Edge {
+    if (a > b) std::swap(a, b);
+    return {(c.points[a] - c.points[b]).norm(), a, b};
+  };
+  std::vector<Edge> todo;         // the short interface edges, shortest first
+  std::vector<uint32_t> stamped;  // the points the last pass stamped (with repeats)
+  std::vector<uint32_t> ring;
+  long made_total = 0, last_first = 0;  // collapses made; the number of the last pass's first
   for (int pass = 0; pass < 8; ++pass) {
-    std::vector<std::tuple<double, uint32_t, uint32_t>> todo;
-    for (const auto& f : interface_faces(c, adj))
-      for (int e = 0; e < 3; ++e) {
-        const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3];
-        if (a > b) continue;  // each edge once: a closed oriented interface uses it once each way
-        const double len = (c.points[a] - c.points[b]).norm();
-        if (len < min_length) todo.push_back({len, a, b});
+    if (pass == 0) {
+      for (const auto& [a, b] : edges) {
+        const Edge x = edge(a, b);
+        if (std::get<0>(x) < min_length) todo.push_back(x);
       }
+    } else {
+      // The last pass changed only tetrahedra all of whose corners it stamped, and moved only
+      // stamped points: an edge with neither end stamped is as it was (still short, still on
+      // the interface), and every other short interface edge has a stamped end, at which it is
+      // found again. The same edges as a new scan of the interface, without the scan.
+      std::vector<Edge> next;
+      for (const Edge& x : todo)
+        if (stamp[std::get<1>(x)] < last_first && stamp[std::get<2>(x)] < last_first) next.push_back(x);
+      sort_unique(stamped);
+      for (uint32_t v : stamped) {
+        if (!c.on_interface[v]) continue;
+        interface_neighbours(c, adj, v, ring);
+        for (uint32_t w : ring) {
+          if (w < v && stamp[w] >= last_first) continue;  // found from w, the smaller stamped end
+          const Edge x = edge(v, w);
+          if (std::get<0>(x) < min_length) next.push_back(x);
+        }
+      }
+      stamped.clear();
+      todo = std::move(next);
+    }
+    last_first = made_total;
     if (todo.empty()) break;
     std::sort(todo.begin(), todo.end());
     long made = 0;
@@ -260,6 +311,7 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
         ++made;
         gather(a, b);
         for (uint32_t w : corners) stamp[w] = made_total;
+        stamped.insert(stamped.end(), corners.begin(), corners.end());
         ++made_total;
       } else {
         failed_at[key] = made_total;

@@ -26,6 +26,10 @@ long collapse_short_interface_edges(TetComplex& c, double min_length,
                                     double max_length = std::numeric_limits<double>::infinity());
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length,
                                     double max_length = std::numeric_limits<double>::infinity());
+// The same from the interface's edges the caller has (each once, {a < b}, any order; e.g. from
+// split_long_interface_edges) instead of a scan of every tetrahedron for them.
+long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 2>>& edges,
+                                    double min_length, double max_length = std::numeric_limits<double>::infinity());
 
 // Collapses the interface edge a–b if the conditions above hold, the removed point merging
 // into the survivor (placed at the midpoint when both may move); true if it did.

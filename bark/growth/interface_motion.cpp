@@ -213,8 +213,13 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     int n = 0;
     double before = 1e300;
+    uint32_t worst = around.front();
     for (uint32_t t : around) {
-      before = std::min(before, tet_quality(c, c.tets[t]));
+      const double q = tet_quality(c, c.tets[t]);
+      if (q < before) {
+        before = q;
+        worst = t;
+      }
       for (uint32_t w : c.tets[t])
         if (w != v) {
           mean += c.points[w];
@@ -223,9 +228,11 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     }
     const Eigen::Vector3d from = c.points[v];
     c.points[v] = from + 0.5 * (mean / n - from);
-    double after = 1e300;
-    for (uint32_t t : around) after = std::min(after, tet_quality(c, c.tets[t]));
-    if (after >= before && all_positive(c, around))
+    // No tetrahedron below the worst before: the worst first (the one a rejected move most
+    // often makes worse), then the rest, stopping at the first below.
+    bool kept = !(tet_quality(c, c.tets[worst]) < before);
+    for (size_t i = 0; kept && i < around.size(); ++i) kept = !(tet_quality(c, c.tets[around[i]]) < before);
+    if (kept && all_positive(c, around))
       ++st.smoothed;
     else
       c.points[v] = from;

@@ -45,13 +45,21 @@ long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, double max_len
 
 long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
                                 double max_length, long max_splits) {
+  std::vector<std::array<uint32_t, 2>> edges;
+  return split_long_interface_edges(c, adj, faces, max_length, edges, max_splits);
+}
+
+long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                double max_length, std::vector<std::array<uint32_t, 2>>& edges, long max_splits) {
   // The interface is scanned once; afterwards only the edges a split makes are new (the two
   // halves, shorter, and the two from the new vertex to the apexes across the edge), so they
   // join a queue of long edges, longest first (ties by index: deterministic).
   std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
   using Item = std::tuple<double, uint32_t, uint32_t>;
   std::priority_queue<Item> queue;
-  for (const auto& e : edges_of(faces)) {
+  edges = edges_of(faces);
+  std::vector<std::array<uint32_t, 2>> split;  // the edges split
+  for (const auto& e : edges) {
     const double len = (c.points[e[0]] - c.points[e[1]]).norm();
     if (len > max_length) queue.push({len, e[0], e[1]});
   }
@@ -90,10 +98,16 @@ long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vec
     for (uint32_t t : adj.around(m)) ok = ok && positive_tet(c, c.tets[t]);
     if (!ok) c.points[m] = mid;
     ++splits;
+    split.push_back({a, b});
     for (uint32_t w : {a, b, apex[0], apex[1]}) {
+      edges.push_back({std::min(m, w), std::max(m, w)});
       const double len = (c.points[m] - c.points[w]).norm();
       if (len > max_length) queue.push({len, std::min(m, w), std::max(m, w)});
     }
+  }
+  if (!split.empty()) {  // the split edges are gone (a split edge's halves are new edges)
+    std::sort(split.begin(), split.end());
+    std::erase_if(edges, [&](const std::array<uint32_t, 2>& e) { return std::binary_search(split.begin(), split.end(), e); });
   }
   return splits;
 }

@@ -20,6 +20,11 @@ long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, double max_len
 // current complex, in its order).
 long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
                                 double max_length, long max_splits = 1000000);
+// The same, and `edges` becomes the interface's edges afterwards (each once, {a < b}, in no
+// particular order): those of `faces` less the split ones, plus the ones the splits made.
+long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
+                                double max_length, std::vector<std::array<uint32_t, 2>>& edges,
+                                long max_splits = 1000000);
 
 // The interface's edges (each once, smaller index first).
 std::vector<std::array<uint32_t, 2>> interface_edges(const TetComplex& c);

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
 #include <tuple>
 
 namespace phellem::bark {
@@ -15,6 +16,12 @@ const Eigen::Vector3d& at(const TetComplex& c, uint32_t p, const Probe& probe) {
   return p == probe.v ? probe.x : c.points[p];
 }
 
+// probe_quality, inlined where the repair evaluates it millions of times a step (the same
+// operations, so the same bits under -ffp-contract=off).
+[[gnu::always_inline]] inline double quality_seen(const TetComplex& c, const std::array<uint32_t, 4>& t, const Probe& probe) {
+  return tet_quality(at(c, t[0], probe), at(c, t[1], probe), at(c, t[2], probe), at(c, t[3], probe));
+}
+
 bool free_vertex(const TetComplex& c, const TetAdjacency& adj, uint32_t v) {
   return !c.on_interface[v] && !c.on_box[v] && !c.frozen[v] && !adj.unused(v);
 }
@@ -22,7 +29,7 @@ bool free_vertex(const TetComplex& c, const TetAdjacency& adj, uint32_t v) {
 }  // namespace
 
 double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, const Probe& probe) {
-  return tet_quality(at(c, t[0], probe), at(c, t[1], probe), at(c, t[2], probe), at(c, t[3], probe));
+  return quality_seen(c, t, probe);
 }
 
 bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats) {
@@ -49,9 +56,9 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
     made[size_t(k)][size_t(i)] = e;
     ++k;
   }
-  const double before = std::min(probe_quality(c, T, probe), probe_quality(c, U, probe));
+  const double before = std::min(quality_seen(c, T, probe), quality_seen(c, U, probe));
   double after = 1e300;
-  for (const auto& m : made) after = std::min(after, probe_quality(c, m, probe));
+  for (const auto& m : made) after = std::min(after, quality_seen(c, m, probe));
   if (!(after > before + kGain)) return false;
   for (const auto& m : made)
     if (!positive_tet(c, m)) return false;
@@ -112,7 +119,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
     if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) return false;
   }
   double before = 1e300;
-  for (uint32_t t : around_ab) before = std::min(before, probe_quality(c, c.tets[t], probe));
+  for (uint32_t t : around_ab) before = std::min(before, quality_seen(c, c.tets[t], probe));
   // Each fan of the ring from one of its vertices r0: for every ring edge rj–rj+1 not at r0,
   // the old tetrahedron a–b–rj–rj+1 with b (then a) replaced by r0 — positive exactly when
   // the edge a–b crosses the fan's triangle r0–rj–rj+1 (the 3-2 flip is the case n = 3).
@@ -135,7 +142,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
       std::replace(top.begin(), top.end(), b, r0);
       std::replace(bottom.begin(), bottom.end(), a, r0);
       if (all_interface(top) || all_interface(bottom)) ok = false;
-      q = std::min({q, probe_quality(c, top, probe), probe_quality(c, bottom, probe)});
+      q = std::min({q, quality_seen(c, top, probe), quality_seen(c, bottom, probe)});
       if (!(q > best)) ok = false;  // this fan cannot win: its worst only drops further
       made.push_back(top);
       made.push_back(bottom);
@@ -174,7 +181,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
     const Eigen::Vector3d keep = c.points[v];
     c.points[v] = x;
     if (!worst_tet) {
-      const double q0 = probe_quality(c, c.tets[tets[first]], p);
+      const double q0 = quality_seen(c, c.tets[tets[first]], p);
       if (q0 <= floor) {
         c.points[v] = keep;
         return q0;
@@ -183,7 +190,7 @@ bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Pr
     double q = 1e300;
     for (size_t i = 0; i < tets.size(); ++i) {
       const uint32_t t = tets[i];
-      const double qt = probe_quality(c, c.tets[t], p);
+      const double qt = quality_seen(c, c.tets[t], p);
       if (qt < q) {
         q = qt;
         if (worst_tet) {
@@ -363,7 +370,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
   for (int round = 0; round < 4; ++round) {
     std::vector<std::pair<double, std::array<uint32_t, 4>>> blocking;
     for (uint32_t t : adj.around(v)) {
-      const double q = probe_quality(c, c.tets[t], probe);
+      const double q = quality_seen(c, c.tets[t], probe);
       if (q < kBlocking) blocking.push_back({q, c.tets[t]});
     }
     if (blocking.empty()) break;
@@ -386,31 +393,54 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
   FlipStats stats;
   const Probe none;
   std::vector<uint8_t> dirty(c.points.size(), 0);
+  std::vector<uint32_t> changed;                    // the points dirty marks (with repeats)
+  std::vector<uint8_t> listed(c.points.size(), 0);  // 1 at the given points
+  for (uint32_t p : points)
+    if (p < listed.size()) listed[p] = 1;
   for (int pass = 0; pass < passes; ++pass) {
     // The poor outside tetrahedra at the points (in the first pass all of them, afterwards only
-    // those at points the previous pass changed), each once: from its smallest listed corner.
-    // Collected in fixed blocks of points in parallel, joined in order: deterministic.
-    constexpr size_t kBlock = 1024;
-    const size_t blocks = (points.size() + kBlock - 1) / kBlock;
-    std::vector<std::vector<std::pair<double, std::array<uint32_t, 4>>>> found(blocks);
-    tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
-      for (size_t k = b * kBlock; k < std::min(points.size(), (b + 1) * kBlock); ++k) {
-        const uint32_t p = points[k];
-        for (uint32_t t : adj.around(p)) {
-          if (c.label[t] != TetComplex::kOutside) continue;
-          bool first = true, near_change = pass == 0;
-          for (uint32_t w : c.tets[t]) {
-            if (w < p && std::binary_search(points.begin(), points.end(), w)) first = false;
-            near_change = near_change || w >= dirty.size() || dirty[w];
-          }
-          if (!first || !near_change) continue;
-          const double q = tet_quality(c, c.tets[t]);
-          if (q < threshold) found[b].push_back({q, c.tets[t]});
-        }
-      }
-    });
+    // those with a corner the previous pass changed or made), each once: from its smallest
+    // listed corner.
+    auto smallest_listed = [&](const std::array<uint32_t, 4>& T) {
+      uint32_t s = std::numeric_limits<uint32_t>::max();
+      for (uint32_t w : T)
+        if (w < listed.size() && listed[w]) s = std::min(s, w);
+      return s;
+    };
     std::vector<std::pair<double, std::array<uint32_t, 4>>> bad;
-    for (const auto& f : found) bad.insert(bad.end(), f.begin(), f.end());
+    if (pass == 0) {
+      // Collected in fixed blocks of points in parallel, joined in order: deterministic.
+      constexpr size_t kBlock = 1024;
+      const size_t blocks = (points.size() + kBlock - 1) / kBlock;
+      std::vector<std::vector<std::pair<double, std::array<uint32_t, 4>>>> found(blocks);
+      tbb::parallel_for(size_t(0), blocks, [&](size_t b) {
+        for (size_t k = b * kBlock; k < std::min(points.size(), (b + 1) * kBlock); ++k) {
+          const uint32_t p = points[k];
+          for (uint32_t t : adj.around(p)) {
+            if (c.label[t] != TetComplex::kOutside || smallest_listed(c.tets[t]) != p) continue;
+            const double q = tet_quality(c, c.tets[t]);
+            if (q < threshold) found[b].push_back({q, c.tets[t]});
+          }
+        }
+      });
+      for (const auto& f : found) bad.insert(bad.end(), f.begin(), f.end());
+    } else {
+      // From the changed points and the new ones (few) rather than from every listed point:
+      // the same tetrahedra, each once (the order is the sort's below).
+      std::sort(changed.begin(), changed.end());
+      changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+      for (uint32_t m = uint32_t(dirty.size()); m < c.points.size(); ++m) changed.push_back(m);
+      for (uint32_t d : changed)
+        for (uint32_t t : adj.around(d)) {
+          if (c.label[t] != TetComplex::kOutside || smallest_listed(c.tets[t]) == std::numeric_limits<uint32_t>::max())
+            continue;
+          const double q = tet_quality(c, c.tets[t]);
+          if (q < threshold) bad.push_back({q, c.tets[t]});
+        }
+      std::sort(bad.begin(), bad.end());
+      bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+    }
+    changed.clear();
     std::fill(dirty.begin(), dirty.end(), 0);
     dirty.resize(c.points.size(), 0);
     if (bad.empty()) break;
@@ -431,7 +461,10 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
       if (improve_tet(c, adj, uint32_t(t), none, stats, -1, max_length, relocate, 3)) {
         any = true;
         for (uint32_t w : corners)
-          if (w < dirty.size()) dirty[w] = 1;
+          if (w < dirty.size()) {
+            dirty[w] = 1;
+            changed.push_back(w);
+          }
       }
     }
     if (!any) break;
