@@ -29,10 +29,6 @@ TetAdjacency::TetAdjacency(const TetComplex& c) {
 }
 
 std::vector<uint32_t>& TetAdjacency::row(uint32_t p) {
-  if (touched_) {
-    if (p >= touched_->size()) touched_->resize(size_t(p) + 1, 0);
-    (*touched_)[p] = 1;
-  }
   if (p >= own_.size()) {
     own_.resize(size_t(p) + 1);
     owned_.resize(size_t(p) + 1, 0);

@@ -62,10 +62,6 @@ class TetAdjacency {
   void link(uint32_t t, const std::array<uint32_t, 4>& corners);
   void unlink(uint32_t t, const std::array<uint32_t, 4>& corners);
 
-  // While watching, every corner of a tetrahedron linked or unlinked is marked 1 in `touched`
-  // (grown as points appear): the points whose tetrahedra changed. Null stops watching.
-  void watch(std::vector<uint8_t>* touched) { touched_ = touched; }
-
   // The tetrahedron across the face opposite corner f of tetrahedron t, or −1 (the box).
   long across(const TetComplex& c, uint32_t t, int f) const;
   // The tetrahedra that contain both a and b.
@@ -88,7 +84,6 @@ class TetAdjacency {
   std::vector<uint32_t> offset_, flat_;  // compressed rows as built
   std::vector<std::vector<uint32_t>> own_;
   std::vector<uint8_t> owned_;
-  std::vector<uint8_t>* touched_ = nullptr;
   std::vector<uint32_t>& row(uint32_t p);
 };
 
