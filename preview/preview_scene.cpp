@@ -269,7 +269,7 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
         }
         if (o.growth) {  // the surface at the last step of its cambial growth (world space)
           MeshData w = to_mesh_data(*bark_of(oi).grown);
-          compute_vertex_normals(w);
+          compute_vertex_normals(w, true);  // its UV seams are cut (growth_run.h): shade across them as one surface
           made.push_back(from_mesh(w));
           break;
         }
