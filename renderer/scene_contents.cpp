@@ -231,7 +231,8 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
         }
         if (o.procedural || o.growth) {
           // A grown mesh is the surface of its last step (world space, as object_trimesh's).
-          const bark::TriMesh& t = o.growth ? *bark_of(bark, oi, o).grown : object_trimesh(o);
+          bark::TriMesh made;  // a procedural mesh's; a grown one is read where it is, not copied
+          const bark::TriMesh& t = o.growth ? *bark_of(bark, oi, o).grown : (made = object_trimesh(o));
           MeshData w = to_mesh_data(t);
           if (o.growth) w.texture_levels = bark_of(bark, oi, o).texture_levels;
           compute_vertex_normals(w, o.growth != nullptr);  // a grown mesh's seams cut for the UVs shade as one surface
