@@ -10,6 +10,7 @@
 #include "bark/growth/growth_contact.h"
 #include "bark/growth/interface_curvature.h"
 #include "bark/growth/interface_motion.h"
+#include "bark/growth/volume_remesh.h"
 #include "util/errors.h"
 
 namespace phellem::bark {
@@ -88,9 +89,8 @@ CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObs
   if (settings_.edge_max <= 0) settings_.edge_max = 1.5 * mean;
   if (settings_.edge_min <= 0) settings_.edge_min = 0.4 * settings_.edge_max;
   const auto t0 = Clock::now();
-  std::vector<GrowthObstacle> welded_obstacles;
-  for (const auto& o : obstacles) welded_obstacles.push_back({welded(o.mesh), o.where});
-  complex_ = tetrahedralize_surface(input, welded_obstacles, settings_.tet, file, where);
+  for (const auto& o : obstacles) obstacles_.push_back({welded(o.mesh), o.where});
+  complex_ = tetrahedralize_surface(input, obstacles_, settings_.tet, file, where);
   if (!vertex_speed.empty()) {
     // TetGen keeps the input points first and in order; its own points (off the interface) get 1.
     complex_.speed.assign(complex_.points.size(), 1.0f);
@@ -160,6 +160,25 @@ bool CambialGrowth::step() {
   stats_.splits += repair.splits;
   stats_.collapses += repair.collapses;
   stats_.flips += repair.flips23 + repair.flips32;
+  // Most moves blocked: the volume around the interface has worn out; TetGen makes it anew
+  // (the interface and its points unchanged).
+  const long tried = st.moved + st.shortened + st.clamped;
+  // At most once per edge length of thickening: the volume wears out over about two of them,
+  // and each re-tetrahedralization costs as much as tens of steps.
+  grown_since_remesh_ += step_thickening;
+  if (settings_.remesh_blocked > 0 && tried > 0 && grown_since_remesh_ >= settings_.edge_max &&
+      double(st.shortened + st.clamped) > settings_.remesh_blocked * double(tried)) {
+    grown_since_remesh_ = 0;
+    const auto tr = Clock::now();
+    if (retetrahedralize(complex_, obstacles_, settings_.tet, file_, where_)) {
+      adjacency_.emplace(complex_);
+      obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);
+      ++stats_.remeshes;
+    } else {
+      ++stats_.remesh_refused;
+    }
+    stats_.remesh_s += since(tr);
+  }
   ++step_;
   stats_.steps_s += since(t0);
   if (cracks_) {  // thesis sec. 5: the stress and cracks carried to the grown surface, then cracking

@@ -35,6 +35,10 @@ struct CambialGrowthSettings {
   TetSettings tet;
   bool reverse = false;  // sec. 4.3: shrink from the surface at age_end back to age_start
   double curvature = 0.2;  // forwards: the share of the outward normal Laplacian each step adds (pits catch up)
+  // After a step in which more than this share of the interface's moves were shortened or
+  // clamped, the volume is tetrahedralized again around the interface (volume_remesh.h; 0:
+  // never, the local repair alone), at most once per edge_max of thickening.
+  double remesh_blocked = 0.02;
 };
 
 struct CambialGrowthStats {
@@ -44,6 +48,9 @@ struct CambialGrowthStats {
   long frozen_obstacle = 0, frozen_contact = 0;  // interface vertices stopped by an obstacle, by another front
   double setup_s = 0, steps_s = 0;  // TetGen; all steps (without the crack coupling)
   double cracks_s = 0;              // the crack coupling, all steps
+  long remeshes = 0;                // re-tetrahedralizations (volume_remesh.h)
+  long remesh_refused = 0;          // ... TetGen refused (the interface touching itself)
+  double remesh_s = 0;              // their time (part of steps_s)
 };
 
 // The interface as a compact triangle mesh (outwards), with its UVs when the input had them,
@@ -93,10 +100,12 @@ class CambialGrowth {
   TetComplex complex_;
   std::unique_ptr<GrowthCracks> cracks_;
   std::optional<TetAdjacency> adjacency_;  // of complex_, kept in step by every operation
+  std::vector<GrowthObstacle> obstacles_;  // welded, as TetGen had them first (for re-tetrahedralizing)
   std::vector<std::array<uint32_t, 3>> obstacle_faces_;
   std::vector<GrowthRing> rings_;
   CambialGrowthStats stats_;
   int step_ = 0;
+  double grown_since_remesh_ = 0;  // m: the most thickening since the volume was last made
 };
 
 }  // namespace phellem::bark

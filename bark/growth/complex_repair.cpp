@@ -2,6 +2,7 @@
 
 #include "bark/growth/interface_coarsening.h"
 #include "bark/growth/interface_refinement.h"
+#include "bark/growth/free_vertex_removal.h"
 #include "bark/growth/tet_flips.h"
 
 namespace phellem::bark {
@@ -25,10 +26,26 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   std::vector<uint32_t> interface;
   for (uint32_t v = 0; v < c.points.size(); ++v)
     if (c.on_interface[v]) interface.push_back(v);
+  // The free vertices the front pressed against the interface (a poor tetrahedron around them):
+  // removed, in index order, where that raises their worst quality.
+  FlipStats removal;
+  {
+    std::vector<uint8_t> near(c.points.size(), 0);
+    for (uint32_t v : interface)
+      for (uint32_t t : adj.around(v))
+        for (uint32_t w : c.tets[t]) near[w] = !c.on_interface[w] && !c.on_box[w] && !c.frozen[w];
+    for (uint32_t w = 0; w < near.size(); ++w) {
+      if (!near[w] || adj.unused(w)) continue;
+      double worst = 1e300;
+      for (uint32_t t : adj.around(w)) worst = std::min(worst, tet_quality(c, c.tets[t]));
+      if (worst < settings.removal_quality) remove_free_vertex(c, adj, w, Probe{}, removal);
+    }
+  }
   const FlipStats fs = improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length, settings.quality_passes);
   st.flips23 = fs.flips23;
   st.flips32 = fs.flips32 + fs.edge_removals;
   st.relocated = fs.relocated;
+  st.removed = fs.removed + removal.removed;
   st.free_splits = fs.splits;
   return st;
 }

@@ -2,9 +2,13 @@
 // (Kratt et al., Woodification, sec. 3; Misztal and Bærentzen): in this order
 //  1. interface edges longer than the band's upper bound are split (interface_refinement.h),
 //  2. interface edges shorter than its lower bound are collapsed (interface_coarsening.h),
-//  3. the poor outside tetrahedra around the interface are flipped, their long free edges
-//     split and their free vertices relocated (tet_flips.h), so that the next motion is not
-//     blocked.
+//  3. the free vertices next to the interface with a poor tetrahedron are removed where that
+//     improves it (free_vertex_removal.h),
+//  4. the poor tetrahedra around the interface (outside and inside) are flipped, their long
+//     free edges split and their free vertices relocated (tet_flips.h), so that the next
+//     motion is not blocked.
+// When that no longer keeps moves from blocking, CambialGrowth tetrahedralizes the volume
+// again (volume_remesh.h).
 // A growth step is
 //   advance_interface(c, growth, t0, t1);
 //   growth_repair_step(c, band_min, band_max);
@@ -22,12 +26,16 @@ struct RepairStats {
   long flips23 = 0;
   long flips32 = 0;      // 3-2 flips and edge removals (4-4, 5-6, 6-8)
   long relocated = 0;
+  long removed = 0;      // free vertices collapsed away (free_vertex_removal.h)
   long free_splits = 0;  // splits of long non-interface edges of poor outside tetrahedra
 };
 
 struct RepairSettings {
   double quality_threshold = 0.01;  // outside tetrahedra below this tet_quality are improved
   int quality_passes = 2;
+  // Free vertices next to the interface whose worst tetrahedron is below this are removed
+  // (free_vertex_removal.h) where that raises it.
+  double removal_quality = 0.1;
   // × max_length: longer free edges of poor tetrahedra are split (0: none; splitting the
   // needles of a coarse outside made the lag worse in the sphere test, so it is off).
   double free_split_length = 0;

@@ -56,9 +56,12 @@ bool free_point(const TetComplex& c, uint32_t w) { return !c.on_interface[w] && 
 // second by kCarry[1] of it (the mean over their first-ring neighbours), the second ring
 // first. The tetrahedra the front moves into then keep most of their height instead of
 // flattening against it, and far fewer moves block (each blocked move costs a retessellation).
+// The first ring moves with the front (kCarry[0] = 1), so the gap in front of it stays: at
+// 2/3 it closed by a third of a step each step, and a jittered log grown 5 steps past a fresh
+// volume had 169 of 4051 moves blocked, against 24 at 1 (and 2109 with no carrying).
 // Each vertex goes as far as its tetrahedra stay positive (move_towards); index order within a
 // ring: deterministic.
-constexpr double kCarry[2] = {2.0 / 3.0, 1.0 / 3.0};
+constexpr double kCarry[2] = {1.0, 0.5};
 
 void carry_free_vertices(TetComplex& c, const TetAdjacency& adj, const std::vector<uint32_t>& movers,
                          const std::vector<Eigen::Vector3d>& target, const std::vector<uint8_t>& active) {
@@ -191,6 +194,7 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     }
   st.flips = fs.flips23 + fs.flips32 + fs.edge_removals;
   st.relocated = fs.relocated;
+  st.removed = fs.removed;
 
   // Smoothing of the free vertices within two rings of the interface: towards the mean of
   // their tetrahedra's other corners, where every tetrahedron stays positive and the worst

@@ -29,6 +29,7 @@ struct InterfaceStepStats {
   long smoothed = 0;    // free vertices moved by the smoothing
   long flips = 0;       // 2-3 and 3-2 flips made to unblock moves
   long relocated = 0;   // free vertices moved to unblock moves
+  long removed = 0;     // free vertices collapsed away to unblock moves
 };
 
 // The area-weighted outward normals of the interface faces at each point (0 elsewhere), from

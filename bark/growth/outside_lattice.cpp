@@ -11,6 +11,27 @@ namespace phellem::bark {
 
 using namespace triangle_tree;
 
+namespace {
+
+constexpr double kNudge = 0.01;
+
+// Three values in [−1, 1) from a lattice point's index and its level (splitmix64).
+Eigen::Vector3d nudge(uint64_t index, uint64_t level) {
+  uint64_t x = index * 0x9E3779B97F4A7C15ull ^ level;
+  Eigen::Vector3d v;
+  for (int k = 0; k < 3; ++k) {
+    x += 0x9E3779B97F4A7C15ull;
+    uint64_t z = x;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    v[k] = double(z >> 11) / double(1ull << 52) - 1.0;
+  }
+  return v;
+}
+
+}  // namespace
+
 std::vector<Eigen::Vector3d> outside_lattice(const std::vector<const TriMesh*>& meshes, const Eigen::Vector3d& lo,
                                              const Eigen::Vector3d& hi, double spacing) {
   std::vector<Eigen::Vector3d> out;
@@ -43,8 +64,12 @@ std::vector<Eigen::Vector3d> outside_lattice(const std::vector<const TriMesh*>& 
         const double d2 = CGAL::to_double(tree.squared_distance(cgal(point(i))));
         keep[i] = d2 >= h * h && (coarsest || d2 < 4 * h * h);
       });
+      // Each point nudged by up to kNudge × h on each axis (a hash of its lattice index): a
+      // lattice is full of coplanar and cospherical points, which trip TetGen's symbolic
+      // perturbation (an assertion, not an error, in Debian's 1.5.0) once a grown interface
+      // happens to share their planes.
       for (size_t i = 0; i < n; ++i)
-        if (keep[i]) out.push_back(point(i));
+        if (keep[i]) out.push_back(point(i) + kNudge * h * nudge(uint64_t(i) * 2 + uint64_t(off > 0), uint64_t(h * 1e9)));
     }
     if (coarsest) break;
   }

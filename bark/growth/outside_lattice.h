@@ -19,8 +19,8 @@ namespace phellem::bark {
 
 // Points of the body-centred cubic lattices of spacing h = spacing·2^l (l = 0, 1, ...; aligned
 // at lo) inside the box [lo, hi], at least h/2 from its faces, whose distance d to the nearest
-// triangle of `meshes` lies in [h, 2h) (the coarsest level: every d ≥ h). Deterministic, in
-// lattice order.
+// triangle of `meshes` lies in [h, 2h) (the coarsest level: every d ≥ h), each nudged by up to
+// 1 % of h on each axis so that no four are exactly coplanar. Deterministic, in lattice order.
 std::vector<Eigen::Vector3d> outside_lattice(const std::vector<const TriMesh*>& meshes, const Eigen::Vector3d& lo,
                                              const Eigen::Vector3d& hi, double spacing);
 

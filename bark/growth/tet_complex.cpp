@@ -1,7 +1,5 @@
 #include "bark/growth/tet_complex.h"
 
-#define TETLIBRARY
-#include <tetgen.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
@@ -14,6 +12,7 @@
 #include <optional>
 
 #include "bark/growth/outside_lattice.h"
+#include "bark/growth/tetgen_process.h"
 #include "util/errors.h"
 
 namespace phellem::bark {
@@ -222,7 +221,7 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
     lattice = outside_lattice(meshes, lo, hi, s.lattice * pad);
   }
 
-  tetgenio in, out;
+  tetgenio in;
   in.numberofpoints = int(n_all + 8 + lattice.size());
   in.pointlist = tetgen_array<REAL>(3 * (n_all + 8 + lattice.size()));
   auto set_point = [&](size_t i, const Eigen::Vector3d& p) {
@@ -273,30 +272,31 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
     std::snprintf(switches, sizeof switches, "pYAQq%.6ga%.9g", s.quality, s.max_volume);
   else
     std::snprintf(switches, sizeof switches, "pYAQq%.6g", s.quality);
+  TetgenMesh out;
   try {
-    tetrahedralize(switches, &in, &out);
-  } catch (int code) {
+    out = tetrahedralize_in_child(switches, in);
+  } catch (const TetgenFailure& e) {
     throw UserError(file, where,
                     "TetGen cannot tetrahedralize the surface" + std::string(obstacles.empty() ? "" : " and its obstacles") +
-                        " (code " + std::to_string(code) + "; a self-intersecting or degenerate surface?)");
+                        " (" + e.what() + "; a self-intersecting or degenerate surface?)");
   }
 
   TetComplex c;
-  c.points.resize(size_t(out.numberofpoints));
+  c.points.resize(out.points.size() / 3);
   for (size_t i = 0; i < c.points.size(); ++i)
-    c.points[i] = Eigen::Vector3d(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
-  c.tets.resize(size_t(out.numberoftetrahedra));
+    c.points[i] = Eigen::Vector3d(out.points[3 * i], out.points[3 * i + 1], out.points[3 * i + 2]);
+  c.tets.resize(out.tets.size() / 4);
   c.label.resize(c.tets.size());
   for (size_t t = 0; t < c.tets.size(); ++t) {
-    for (int k = 0; k < 4; ++k) c.tets[t][size_t(k)] = uint32_t(out.tetrahedronlist[4 * t + size_t(k)]);
+    for (int k = 0; k < 4; ++k) c.tets[t][size_t(k)] = uint32_t(out.tets[4 * t + size_t(k)]);
     if (orientation(c, c.tets[t]) == CGAL::NEGATIVE) std::swap(c.tets[t][2], c.tets[t][3]);
   }
   // Labels per region (TetGen numbers the regions the facets enclose): the region that touches
   // the box is outside; a region on the inner side of an obstacle's triangle (the side its
   // outward orientation faces away from, decided by the exact predicate) is that obstacle's;
   // every other region (the surface's inside, several if it has several components) is inside.
-  const size_t n_attributes = size_t(out.numberoftetrahedronattributes);
-  auto attribute = [&](size_t t) { return out.tetrahedronattributelist[t * n_attributes]; };
+  const size_t n_attributes = size_t(out.attributes_per_tet);
+  auto attribute = [&](size_t t) { return out.attributes[t * n_attributes]; };
   std::map<double, uint8_t> region_label;
   for (size_t t = 0; t < c.tets.size(); ++t) {
     for (uint32_t v : c.tets[t])

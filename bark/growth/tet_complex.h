@@ -31,7 +31,7 @@ struct TetSettings {
   double max_volume = 0;         // m³ per tetrahedron (switch a; 0: none)
   // Steiner points TetGen starts from (outside_lattice.h): graded lattices from `lattice` ×
   // the padding away from the surface, which make its set-up near linear (0: none).
-  double lattice = 0;
+  double lattice = 0.2;
 };
 
 struct TetComplex {

@@ -1,5 +1,7 @@
 #include "bark/growth/tet_flips.h"
 
+#include "bark/growth/free_vertex_removal.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -33,9 +35,10 @@ double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, cons
 }
 
 bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats) {
-  if (c.label[t] != TetComplex::kOutside) return false;
+  const uint8_t label = c.label[t];
+  if (label == TetComplex::kObstacle) return false;
   const long ul = adj.across(c, t, f);
-  if (ul < 0 || c.label[size_t(ul)] != TetComplex::kOutside) return false;
+  if (ul < 0 || c.label[size_t(ul)] != label) return false;
   const uint32_t u = uint32_t(ul);
   const std::array<uint32_t, 4> T = c.tets[t], U = c.tets[u];
   const uint32_t d = T[size_t(f)];
@@ -45,7 +48,7 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
   if (e == d || adj.has_edge(c, d, e)) return false;
   // Never a new edge between two interface points through the outside: such an edge caps the
   // interface, and the cap flattens and blocks as the interface grows under it.
-  if (c.on_interface[d] && c.on_interface[e]) return false;
+  if (label == TetComplex::kOutside && c.on_interface[d] && c.on_interface[e]) return false;
   // Each new tetrahedron is T with one face corner replaced by e: positive exactly when the
   // segment d–e crosses the shared face (the union is convex there).
   std::array<std::array<uint32_t, 4>, 3> made;
@@ -64,7 +67,7 @@ bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& p
     if (!positive_tet(c, m)) return false;
   adj.set_tet(c, t, made[0]);
   adj.set_tet(c, u, made[1]);
-  adj.add_tet(c, made[2], TetComplex::kOutside);
+  adj.add_tet(c, made[2], label);
   ++stats.flips23;
   return true;
 }
@@ -83,8 +86,10 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
   adj.edge_tets(c, a, b, around_ab);
   const size_t n = around_ab.size();
   if (n < 3 || n > size_t(max_ring)) return false;
+  const uint8_t label = c.label[around_ab[0]];
+  if (label == TetComplex::kObstacle) return false;
   for (uint32_t t : around_ab)
-    if (c.label[t] != TetComplex::kOutside) return false;
+    if (c.label[t] != label) return false;
   // The ring of the edge, in order: each tetrahedron a–b–x–y links x to y; they must close.
   links.resize(n);
   for (size_t i = 0; i < n; ++i) {
@@ -137,7 +142,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
       const uint32_t x = ring[j], y = ring[(j + 1) % n];
       if (x == r0 || y == r0) continue;
       // No new edge between two interface points through the outside (see flip_23).
-      if (j != (apex + 1) % n && c.on_interface[r0] && c.on_interface[x]) ok = false;
+      if (label == TetComplex::kOutside && j != (apex + 1) % n && c.on_interface[r0] && c.on_interface[x]) ok = false;
       std::array<uint32_t, 4> top = c.tets[ring_tet[j]], bottom = top;
       std::replace(top.begin(), top.end(), b, r0);
       std::replace(bottom.begin(), bottom.end(), a, r0);
@@ -159,7 +164,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
   std::sort(slots.begin(), slots.end());
   size_t k = 0;
   for (; k < std::min(slots.size(), best_made.size()); ++k) adj.set_tet(c, slots[k], best_made[k]);
-  for (size_t i = k; i < best_made.size(); ++i) adj.add_tet(c, best_made[i], TetComplex::kOutside);
+  for (size_t i = k; i < best_made.size(); ++i) adj.add_tet(c, best_made[i], label);
   for (size_t i = slots.size(); i-- > k;) adj.erase_tet(c, slots[i]);  // last first: indices stay valid
   if (n == 3)
     ++stats.flips32;
@@ -293,7 +298,9 @@ class FailedOps {
   }
 
  private:
-  static long changes(const FlipStats& s) { return s.flips23 + s.flips32 + s.relocated + s.splits + s.edge_removals; }
+  static long changes(const FlipStats& s) {
+    return s.flips23 + s.flips32 + s.relocated + s.splits + s.edge_removals + s.removed;
+  }
   std::vector<Key> failed_;
   long at_ = -1;
 };
@@ -311,7 +318,7 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
   // tetrahedra only, and t is one of those around each of its edges and faces: for any other
   // t every flip would refuse, so none is tried.
   static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  const bool outside = c.label[t] == TetComplex::kOutside;
+  const bool outside = c.label[t] != TetComplex::kObstacle;  // (inside too)
   for (const auto& e : kEdge) {
     if (!outside || e[0] == skip_corner || e[1] == skip_corner) continue;
     if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
@@ -324,6 +331,12 @@ bool improve_tet(TetComplex& c, TetAdjacency& adj, uint32_t t, const Probe& prob
     for (const auto& e : kEdge)
       if (e[0] == skip_corner || e[1] == skip_corner)
         if (edge_removal(T[size_t(e[0])], T[size_t(e[1])])) return true;
+  // A free corner pressed against the rest (the front pushes the outside together): removed.
+  for (int i = 0; i < 4; ++i) {
+    if (i == skip_corner) continue;
+    const uint32_t w = T[size_t(i)];
+    if (attempt({3, w, 0}, [&] { return remove_free_vertex(c, adj, w, probe, stats); })) return true;
+  }
   if (max_length > 0) {
     double longest = max_length;
     int best = -1;
@@ -417,7 +430,7 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
         for (size_t k = b * kBlock; k < std::min(points.size(), (b + 1) * kBlock); ++k) {
           const uint32_t p = points[k];
           for (uint32_t t : adj.around(p)) {
-            if (c.label[t] != TetComplex::kOutside || smallest_listed(c.tets[t]) != p) continue;
+            if (c.label[t] == TetComplex::kObstacle || smallest_listed(c.tets[t]) != p) continue;
             const double q = tet_quality(c, c.tets[t]);
             if (q < threshold) found[b].push_back({q, c.tets[t]});
           }
@@ -432,7 +445,7 @@ FlipStats improve_tets_near(TetComplex& c, TetAdjacency& adj, const std::vector<
       for (uint32_t m = uint32_t(dirty.size()); m < c.points.size(); ++m) changed.push_back(m);
       for (uint32_t d : changed)
         for (uint32_t t : adj.around(d)) {
-          if (c.label[t] != TetComplex::kOutside || smallest_listed(c.tets[t]) == std::numeric_limits<uint32_t>::max())
+          if (c.label[t] == TetComplex::kObstacle || smallest_listed(c.tets[t]) == std::numeric_limits<uint32_t>::max())
             continue;
           const double q = tet_quality(c, c.tets[t]);
           if (q < threshold) bad.push_back({q, c.tets[t]});

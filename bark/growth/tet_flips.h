@@ -2,12 +2,14 @@
 // sec. 3: "the vertex motion is temporarily limited to the point where it yields a degenerate
 // (flat) tetrahedron, which is removed by a local retesselation allowing the vertex motion to
 // continue ... smoothing of the interior/exterior meshes improves performance"; after Misztal
-// and Bærentzen). Three operations, all on the tetrahedra around the interface:
+// and Bærentzen). The operations, all on the tetrahedra around the interface:
 //  - 2-3 flips (a face shared by two tetrahedra becomes an edge shared by three) and
 //  - 3-2 flips (the reverse) and their generalisation, edge removal (4-4, 5-6, 6-8), only
-//    among OUTSIDE tetrahedra: the union of the flipped
+//    among tetrahedra of one label (outside, or inside: the inside stretches behind a growing
+//    front as the outside is pushed together in front of it): the union of the flipped
 //    tetrahedra keeps its boundary, so no interface face appears or disappears and no label
 //    boundary is crossed;
+//  - removal of free vertices pressed against the rest (free_vertex_removal.h);
 //  - relocation of free vertices (neither on the interface, nor on the box, nor frozen);
 //  - splits of long edges of poor outside tetrahedra that are not interface edges (TetGen
 //    leaves the outside coarse: needles from an interface face to a far vertex, which no flip
@@ -39,20 +41,22 @@ struct FlipStats {
   long relocated = 0;
   long splits = 0;
   long edge_removals = 0;  // edges of 4 to 6 tetrahedra removed (4-4, 5-6, 6-8 flips)
+  long removed = 0;        // free vertices collapsed into a neighbour (free_vertex_removal.h)
 };
 
 double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, const Probe& probe);
 
 // The 2-3 flip of the face opposite corner f of tetrahedron t; false (nothing changed) unless
-// both tetrahedra are outside, the three new ones are positive and the worst quality rises.
+// both tetrahedra have one label (not obstacle), the three new ones are positive and the
+// worst quality rises (outside, no new edge may join two interface points).
 bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats);
-// The 3-2 flip removing edge a–b; false unless exactly three outside tetrahedra surround it,
+// The 3-2 flip removing edge a–b; false unless exactly three tetrahedra of one label surround it,
 // the two new ones are positive and the worst quality rises.
 bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats);
-// Edge removal, the 3-2 flip's generalisation: the n ≤ max_ring outside tetrahedra around edge
-// a–b become 2(n − 2) (a fan of the ring from its best vertex, joined to a and to b); false
-// unless they close around the edge, all new ones are positive, none joins two interface
-// points by a new edge or has four interface corners, and the worst quality rises.
+// Edge removal, the 3-2 flip's generalisation: the n ≤ max_ring tetrahedra of one label around
+// edge a–b become 2(n − 2) (a fan of the ring from its best vertex, joined to a and to b);
+// false unless they close around the edge, all new ones are positive, none has four interface
+// corners (nor, outside, joins two interface points by a new edge), and the worst quality rises.
 bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
                  int max_ring = 6);
 // Moves a free vertex to the best of a few candidates (its neighbours' mean, pushes away from
@@ -60,8 +64,8 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
 bool relocate_free_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Probe& probe, FlipStats& stats);
 
 // Removes the tetrahedra around interface vertex v that keep it from reaching `target`
-// (those that would be flat or inverted there): flips their faces and edges opposite v and
-// relocates their free vertices. True if anything changed.
+// (those that would be flat or inverted there): flips their faces and edges opposite v,
+// removes or relocates their free vertices. True if anything changed.
 bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::Vector3d& target, FlipStats& stats);
 
 // Splits the edge a–b of the complex at its midpoint (every tetrahedron around it in two, with
@@ -69,7 +73,7 @@ bool unblock_vertex(TetComplex& c, TetAdjacency& adj, uint32_t v, const Eigen::V
 // the box. Returns the new point.
 uint32_t split_free_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, FlipStats& stats);
 
-// Quality repair around the given points (sorted): the outside tetrahedra that use them and
+// Quality repair around the given points (sorted): the tetrahedra (not obstacles) that use them and
 // whose quality is below `threshold` are improved, worst first, by flips, else by splitting
 // their longest edge that is not between interface points if it is longer than `max_length`,
 // else (with `relocate`) by relocation; for up to `passes` passes. Deterministic.

@@ -48,7 +48,9 @@ TEST(TetComplex, AGradedLatticeAddsOnlyFreePointsAwayFromTheSurface) {
   const TriMesh sphere = icosphere(3, 0.5);
   TetSettings graded;
   graded.lattice = 0.5;  // from 0.25 m (half the 0.5 m padding) out
-  const TetComplex plain = tetrahedralize_surface(sphere, TetSettings{}, "scene.json", "/objects/0");
+  TetSettings none;
+  none.lattice = 0;
+  const TetComplex plain = tetrahedralize_surface(sphere, none, "scene.json", "/objects/0");
   const TetComplex c = tetrahedralize_surface(sphere, graded, "scene.json", "/objects/0");
   EXPECT_EQ(c.first_inverted(), -1);
   auto canonical = [](std::vector<std::array<uint32_t, 3>> faces) {  // each from its smallest index, sorted

@@ -1,0 +1,117 @@
+#include "bark/growth/tetgen_process.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdint>
+#include <cstring>
+
+namespace phellem::bark {
+
+namespace {
+
+constexpr uint64_t kMagic = 0x74657467656e3135ull;  // "tetgen15"
+
+bool write_all(int fd, const void* data, size_t n) {
+  const char* p = static_cast<const char*>(data);
+  while (n > 0) {
+    const ssize_t w = ::write(fd, p, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    p += w;
+    n -= size_t(w);
+  }
+  return true;
+}
+
+// The child: never returns. Exit 0 with the mesh written; 3 with TetGen's error code written.
+[[noreturn]] void run_child(int fd, const std::string& switches, tetgenio& in) {
+  const int null = ::open("/dev/null", O_WRONLY);
+  if (null >= 0) {  // TetGen prints its own reports ("BUG Report!") even when quiet
+    ::dup2(null, STDOUT_FILENO);
+    ::dup2(null, STDERR_FILENO);
+  }
+  tetgenio out;
+  std::vector<char> sw(switches.begin(), switches.end());
+  sw.push_back('\0');
+  try {
+    tetrahedralize(sw.data(), &in, &out);
+  } catch (int code) {
+    const int64_t header[2] = {int64_t(kMagic), int64_t(code)};
+    write_all(fd, header, sizeof header);
+    ::_exit(3);
+  } catch (...) {
+    ::_exit(4);
+  }
+  const int64_t header[5] = {int64_t(kMagic), 0, out.numberofpoints, out.numberoftetrahedra, out.numberoftetrahedronattributes};
+  bool ok = write_all(fd, header, sizeof header);
+  ok = ok && write_all(fd, out.pointlist, sizeof(double) * 3 * size_t(out.numberofpoints));
+  ok = ok && write_all(fd, out.tetrahedronlist, sizeof(int) * 4 * size_t(out.numberoftetrahedra));
+  ok = ok && write_all(fd, out.tetrahedronattributelist,
+                       sizeof(double) * size_t(out.numberoftetrahedronattributes) * size_t(out.numberoftetrahedra));
+  ::_exit(ok ? 0 : 5);
+}
+
+}  // namespace
+
+TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw TetgenFailure(std::string("cannot open a pipe to TetGen: ") + std::strerror(errno));
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw TetgenFailure(std::string("cannot start TetGen's process: ") + std::strerror(errno));
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    run_child(fds[1], switches, in);
+  }
+  ::close(fds[1]);
+  std::vector<char> bytes;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t r = ::read(fds[0], buffer, sizeof buffer);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) break;
+    bytes.insert(bytes.end(), buffer, buffer + r);
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFSIGNALED(status))
+    throw TetgenFailure("TetGen stopped on signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) +
+                        ", an internal assertion)");
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  int64_t header[5] = {0, 0, 0, 0, 0};
+  if (bytes.size() >= 2 * sizeof(int64_t)) std::memcpy(header, bytes.data(), std::min(bytes.size(), sizeof header));
+  if (code == 3 && header[0] == int64_t(kMagic)) throw TetgenFailure("TetGen error code " + std::to_string(header[1]));
+  if (code != 0 || header[0] != int64_t(kMagic) || bytes.size() < sizeof header)
+    throw TetgenFailure("TetGen's process ended without a mesh (exit " + std::to_string(code) + ")");
+  const int64_t np = header[2], nt = header[3], na = header[4];
+  // Sizes from the child are checked against what arrived before anything is allocated.
+  const size_t need = sizeof header + sizeof(double) * 3 * size_t(np) + sizeof(int) * 4 * size_t(nt) +
+                      sizeof(double) * size_t(na) * size_t(nt);
+  if (np < 0 || nt < 0 || na < 1 || na > 16 || bytes.size() != need)
+    throw TetgenFailure("TetGen's process sent a malformed mesh");
+  TetgenMesh m;
+  m.attributes_per_tet = int(na);
+  m.points.resize(3 * size_t(np));
+  m.tets.resize(4 * size_t(nt));
+  m.attributes.resize(size_t(na) * size_t(nt));
+  const char* p = bytes.data() + sizeof header;
+  std::memcpy(m.points.data(), p, sizeof(double) * m.points.size());
+  p += sizeof(double) * m.points.size();
+  std::memcpy(m.tets.data(), p, sizeof(int) * m.tets.size());
+  p += sizeof(int) * m.tets.size();
+  std::memcpy(m.attributes.data(), p, sizeof(double) * m.attributes.size());
+  for (int v : m.tets)
+    if (v < 0 || v >= np) throw TetgenFailure("TetGen's process sent a tetrahedron with a point out of range");
+  return m;
+}
+
+}  // namespace phellem::bark

@@ -1,0 +1,35 @@
+// TetGen run in a child process. Debian's TetGen 1.5.0 is built with its assertions on: on a
+// degenerate or self-intersecting input (a user's mesh, or a grown interface that has folded
+// onto itself) it may abort or crash instead of throwing, and that must not take Phellem
+// down with a signal. The child (fork) runs tetrahedralize() on the input already in memory
+// and sends the mesh back through a pipe; a child that dies or reports an error is a
+// TetgenFailure the caller turns into a UserError or a step without remeshing.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#define TETLIBRARY
+#include <tetgen.h>
+
+namespace phellem::bark {
+
+struct TetgenMesh {
+  std::vector<double> points;      // 3 per point, TetGen's order
+  std::vector<int> tets;           // 4 per tetrahedron (TetGen's first-index is 0)
+  std::vector<double> attributes;  // per tetrahedron, `attributes_per_tet` each
+  int attributes_per_tet = 0;
+};
+
+class TetgenFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// tetrahedralize(switches, in, out) in a child process (its output to stdout and stderr
+// discarded). Throws TetgenFailure with what happened: TetGen's error code, or the signal that
+// stopped it.
+TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in);
+
+}  // namespace phellem::bark
