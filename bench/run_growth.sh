@@ -29,8 +29,8 @@ n, path = int(sys.argv[1]), sys.argv[2]
 s = json.load(open("bench/scenes/growth_tree_closeup.json"))
 o = s["objects"][0]
 o["procedural"]["triangles"] = n
-e = 0.0095 * (20000 / n) ** 0.5
-o["growth"].update({"steps": 20, "years": 6, "edge_length": [0.37 * e, e]})
+e = 0.013 * (20000 / n) ** 0.5
+o["growth"].update({"steps": 20, "years": 6, "edge_length": [0.385 * e, e]})
 json.dump(s, open(path, "w"))
 PY
   read -r g s steps v0 v1 <<<"$(run "$out/scale.json")"

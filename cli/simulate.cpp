@@ -165,10 +165,12 @@ int run_simulate(const cli::Options& o) {
                      {"steps", growth.steps},
                      {"vertices_start", growth.vertices_start},
                      {"vertices_end", growth.vertices_end},
+                     {"remeshes", growth.remeshes},
                      {"outputs", growth.outputs}};
       j["time_s"]["total"] = since(t0);
       j["time_s"]["growth"] = growth.t_growth;
       j["time_s"]["growth_setup"] = growth.t_setup;
+      j["time_s"]["growth_remesh"] = growth.t_remesh;
       j["time_s"]["growth_crack"] = growth.t_crack;
     }
     write_json_output(out, "--stats", o.stats, j);

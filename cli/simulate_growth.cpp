@@ -98,7 +98,8 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
                               {"flips", st.flips},
                               {"frozen", {{"obstacle", st.frozen_obstacle}, {"contact", st.frozen_contact}}},
                               {"rings", run.rings.size()},
-                              {"time_s", {{"setup", st.setup_s}, {"growth", st.steps_s}, {"crack", t_crack}}}};
+                              {"remeshes", {{"made", st.remeshes}, {"refused", st.remesh_refused}}},
+                              {"time_s", {{"setup", st.setup_s}, {"growth", st.steps_s}, {"remesh", st.remesh_s}, {"crack", t_crack}}}};
     if (cracked) summary["crack_length_m"] = cracked->crack_length();
     write_json_output(out, "-o", (dir / (name + ".json")).string(), summary);
     totals.t_write += since(tw);
@@ -108,6 +109,8 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
     totals.vertices_end += (long long)st.vertices_end;
     totals.t_setup += st.setup_s;
     totals.t_growth += st.steps_s;
+    totals.remeshes += st.remeshes;
+    totals.t_remesh += st.remesh_s;
     totals.t_crack += t_crack;
     totals.outputs.push_back(glb);
     if (!run.rings.empty()) totals.outputs.push_back(rings);
