@@ -123,7 +123,7 @@ MaterialDesc convert_material(const tinygltf::Model& m, int index, const std::st
 
 }  // namespace
 
-LoadedModel load_gltf(const std::string& path, const std::string& attribute) {
+LoadedModel load_gltf(const std::string& path, const std::string& attribute, bool attribute_vec3) {
   const tinygltf::Model model = open_gltf(path);
   GltfReader rd(model, path);
   LoadedModel out;
@@ -184,8 +184,16 @@ LoadedModel load_gltf(const std::string& path, const std::string& attribute) {
         if (!attribute.empty()) {
           const auto it = prim.attributes.find(attribute);
           if (it == prim.attributes.end()) rd.fail(where + ".attributes", "has no vertex attribute " + attribute);
-          std::vector<float> a = rd.first_components(it->second, where + ".attributes." + attribute);
-          if (a.size() != nv) rd.fail(where + ".attributes." + attribute, "count differs from POSITION");
+          const std::string at = where + ".attributes." + attribute;
+          std::vector<float> a = attribute_vec3 ? rd.floats(it->second, 3, at) : rd.first_components(it->second, at);
+          if (a.size() != (attribute_vec3 ? 3 * nv : nv)) rd.fail(at, "count differs from POSITION");
+          if (attribute_vec3) {
+            const Mat3f linear = world.topLeftCorner<3, 3>();
+            for (size_t v = 0; v < nv; ++v) {
+              const Vec3f d = linear * Vec3f(a[3 * v], a[3 * v + 1], a[3 * v + 2]);
+              for (int k = 0; k < 3; ++k) a[3 * v + size_t(k)] = d[k];
+            }
+          }
           out.attribute.push_back(std::move(a));
         }
         out.meshes.push_back(std::move(md));
@@ -210,14 +218,14 @@ LoadedModel load_gltf(const std::string& path, const std::string& attribute) {
   return out;
 }
 
-LoadedModel load_mesh_file(const std::string& path, const std::string& attribute) {
+LoadedModel load_mesh_file(const std::string& path, const std::string& attribute, bool attribute_vec3) {
   const std::string ext = fs::path(path).extension().string();
   if (ext == ".obj") {
     if (!attribute.empty())
       throw UserError(path, "", "an OBJ file carries no vertex attribute " + attribute + "; use a glTF file (.glb/.gltf)");
     return load_obj(path);
   }
-  return load_gltf(path, attribute);
+  return load_gltf(path, attribute, attribute_vec3);
 }
 
 }  // namespace phellem

@@ -79,6 +79,11 @@ void write_glb(const std::string& path, const std::string& mesh_name, const GlbM
     attributes[name] = add_accessor(model, add_view(model, values.data(), n * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
                                     TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, n);
   }
+  for (const auto& [name, values] : glb.vectors) {
+    if (name.empty() || name[0] != '_' || values.size() != n) throw std::logic_error("write_glb: bad custom attribute " + name);
+    attributes[name] = add_accessor(model, add_view(model, values.data(), n * 12, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                    TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+  }
   for (const GlbPart& part : glb.parts) {
     if (part.indices.empty()) continue;
     tinygltf::Material mat;

@@ -24,6 +24,8 @@ struct GlbMesh {
   MeshData vertices;  // positions, normals, uvs (optional); its indices are not written
   // Application-specific per-vertex scalars (glTF custom attributes: names start with "_").
   std::vector<std::pair<std::string, std::vector<float>>> scalars;
+  // ... and per-vertex 3-vectors (VEC3 custom attributes, e.g. a painted _GROWTH_DIRECTION).
+  std::vector<std::pair<std::string, std::vector<Vec3f>>> vectors;
   std::vector<GlbPart> parts;
   size_t triangle_count() const {
     size_t n = 0;

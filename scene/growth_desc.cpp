@@ -98,6 +98,14 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
     m.finish();
     d.speed_map = std::move(map);
   }
+  if (auto v = o.get("direction_map")) {
+    JsonObject m = v->object();
+    auto a = m.at("attribute");
+    d.direction_attribute = a.string();
+    if (d.direction_attribute.empty() || d.direction_attribute.size() > 64)
+      a.fail("attribute must name a VEC3 glTF vertex attribute (e.g. \"_GROWTH_DIRECTION\")");
+    m.finish();
+  }
   if (auto v = o.get("obstacles")) {
     for (auto& e : v->array()) d.obstacle_names.push_back(e.string());
   }

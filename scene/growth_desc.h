@@ -11,6 +11,7 @@
 //     "strokes": [{"point": [x, y, z], "radius": 0.05, "value": 1, "direction": [x, y, z]}],  // sec. 4.4
 //     "speed_map": {"file": "paint.png", "scale": 1},   // sec. 4.4: speed × scale × map(uv)
 //                  or {"attribute": "COLOR_0"}      // ... × a glTF mesh's vertex attribute (first component)
+//     "direction_map": {"attribute": "_GROWTH_DIRECTION"},  // sec. 4.4: a VEC3 vertex attribute turns the growth
 //     "obstacles": ["wire"],           // names of other mesh or sphere objects
 //     "ring_interval": 10,             // steps between growth rings (0: none)
 //     "cracks": true,                  // with stress bark: crack the surface as it grows (false: no cracks)
@@ -57,6 +58,9 @@ struct GrowthDesc {
   float stretch_stress = 4;
   bool texture_cells = true;  // sec. 4.6 (bark/growth/texture_cells.h); false: textures stretch with the surface
   std::shared_ptr<const GrowthSpeedMap> speed_map;
+  // Sec. 4.4's painted growth directions: a VEC3 vertex attribute of the object's glTF file
+  // (object space; its length up to 1 is how far it turns the growth from the normal), or "".
+  std::string direction_attribute;
   Location where;  // of the growth object itself
 };
 

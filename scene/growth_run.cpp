@@ -48,9 +48,24 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
       throw UserError(desc.file, g.where.path + "/speed_map", "a speed map needs a mesh with texture coordinates");
     for (const auto& uv : surface.uvs) speed.push_back(g.speed_map->scale * g.speed_map->at(uv.x(), uv.y()));
   }
+  // Painted directions (sec. 4.4): a VEC3 attribute, in the scene's space.
+  std::vector<Eigen::Vector3f> direction;
+  if (!g.direction_attribute.empty()) {
+    std::vector<float> d;
+    object_trimesh_vec3(obj, g.direction_attribute, &d);
+    if (d.size() != 3 * surface.positions.size()) throw std::logic_error("start_growth: directions and vertices differ");
+    for (size_t v = 0; v < surface.positions.size(); ++v) {
+      const Eigen::Vector3f D(d[3 * v], d[3 * v + 1], d[3 * v + 2]);
+      if (!(D.norm() <= 1e6f))
+        throw UserError(desc.file, g.where.path + "/direction_map/attribute",
+                        obj.file + ": vertex " + std::to_string(v) + " has a " + g.direction_attribute +
+                            " longer than 1e6 (its length, up to 1, is how far the growth turns)");
+      direction.push_back(D);
+    }
+  }
   const std::string name = obj.name.empty() ? "mesh" + std::to_string(oi) : obj.name;
   Progress bar("tetrahedralize " + name, 1, progress);
-  bark::CambialGrowth growth(surface, obstacles, g.settings, desc.file, g.where.path, speed);
+  bark::CambialGrowth growth(surface, obstacles, g.settings, desc.file, g.where.path, speed, direction);
   bar.advance();
   bar.finish();
   // Stress bark cracks as the surface grows (thesis sec. 5): the young surface now, then after

@@ -79,7 +79,24 @@ DicingParams tree_mesh_dicing(const ObjectDesc& o) {
 
 bark::TriMesh object_trimesh(const ObjectDesc& o) { return object_trimesh(o, {}, nullptr); }
 
+namespace {
+
+bark::TriMesh object_trimesh_with(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values, bool vec3);
+
+}  // namespace
+
 bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values) {
+  return object_trimesh_with(o, attribute, values, false);
+}
+
+bark::TriMesh object_trimesh_vec3(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values) {
+  if (attribute.empty()) throw std::logic_error("object_trimesh_vec3: no attribute");
+  return object_trimesh_with(o, attribute, values, true);
+}
+
+namespace {
+
+bark::TriMesh object_trimesh_with(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values, bool vec3) {
   if (!attribute.empty() && (o.type != ObjectType::Mesh || o.procedural || !values))
     throw std::logic_error("object_trimesh: a vertex attribute needs a mesh file");
   bark::TriMesh t;
@@ -122,7 +139,7 @@ bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, 
   if (o.procedural) {
     t = procedural_trimesh(*o.procedural);
   } else {
-    const LoadedModel model = load_mesh_file(o.file, attribute);
+    const LoadedModel model = load_mesh_file(o.file, attribute, vec3);
     if (values) values->clear();
     for (const auto& a : model.attribute) values->insert(values->end(), a.begin(), a.end());
     for (const MeshData& m : model.meshes) {
@@ -136,8 +153,17 @@ bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, 
   }
   const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
   for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
+  if (vec3 && values) {
+    const Eigen::Matrix3f L = o.transform.matrix.topLeftCorner<3, 3>();
+    for (size_t v = 0; v + 2 < values->size(); v += 3) {
+      const Eigen::Vector3f d = L * Eigen::Vector3f((*values)[v], (*values)[v + 1], (*values)[v + 2]);
+      for (int k = 0; k < 3; ++k) (*values)[v + size_t(k)] = d[k];
+    }
+  }
   return t;
 }
+
+}  // namespace
 
 MeshData to_mesh_data(const bark::TriMesh& t) {
   MeshData m;

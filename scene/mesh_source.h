@@ -18,6 +18,9 @@ bark::TriMesh object_trimesh(const ObjectDesc& o);
 // The same for a mesh file, with the first component of a vertex attribute of every triangle
 // primitive (glTF; mesh_io.h) into `values`, one per vertex of the result.
 bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values);
+// The same with a VEC3 attribute (3 values per vertex), turned by the file's node transforms and
+// the object's transform as offsets are (their linear parts).
+bark::TriMesh object_trimesh_vec3(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values);
 // The object-space dicing of a tree's parts for object_trimesh: the stress bark's preprocess
 // edge_length when set, else with growth the growth's edge_length band's maximum / 1.5, else a
 // hundredth of the trunk's circumference.

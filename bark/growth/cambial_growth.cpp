@@ -79,10 +79,13 @@ GrowthSurface extract_interface(const TetComplex& c) {
 }
 
 CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
-                             const std::string& file, const std::string& where, const std::vector<float>& vertex_speed)
+                             const std::string& file, const std::string& where, const std::vector<float>& vertex_speed,
+                             const std::vector<Eigen::Vector3f>& vertex_direction)
     : settings_(s), file_(file), where_(where) {
   if (!vertex_speed.empty() && vertex_speed.size() != surface.positions.size())
     throw std::invalid_argument("CambialGrowth: one speed per surface vertex");
+  if (!vertex_direction.empty() && vertex_direction.size() != surface.positions.size())
+    throw std::invalid_argument("CambialGrowth: one direction per surface vertex");
   std::vector<int64_t> first_of;  // welded vertex -> the input vertex it was made from
   const TriMesh input = welded(surface, &first_of);
   const double mean = mean_edge_length(input);
@@ -95,6 +98,10 @@ CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObs
     // TetGen keeps the input points first and in order; its own points (off the interface) get 1.
     complex_.speed.assign(complex_.points.size(), 1.0f);
     for (size_t i = 0; i < first_of.size(); ++i) complex_.speed[i] = vertex_speed[size_t(first_of[i])];
+  }
+  if (!vertex_direction.empty()) {
+    complex_.direction.assign(complex_.points.size(), Eigen::Vector3f::Zero());
+    for (size_t i = 0; i < first_of.size(); ++i) complex_.direction[i] = vertex_direction[size_t(first_of[i])];
   }
   adjacency_.emplace(complex_);
   obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);  // obstacle tetrahedra never change

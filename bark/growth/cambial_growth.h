@@ -69,9 +69,11 @@ class CambialGrowth {
   // `surface`: closed and consistently oriented (UserError at file/where otherwise);
   // `obstacles`: closed meshes that do not grow, apart from the surface and each other;
   // `vertex_speed`: empty, or a factor per surface vertex (sec. 4.4's painted map), carried by
-  // the interface's points (interpolated where edges split).
+  // the interface's points (interpolated where edges split); `vertex_direction`: empty, or a
+  // painted growth direction per surface vertex (TetComplex::direction), carried the same way.
   CambialGrowth(const TriMesh& surface, const std::vector<GrowthObstacle>& obstacles, const CambialGrowthSettings& s,
-                const std::string& file, const std::string& where, const std::vector<float>& vertex_speed = {});
+                const std::string& file, const std::string& where, const std::vector<float>& vertex_speed = {},
+                const std::vector<Eigen::Vector3f>& vertex_direction = {});
 
   // Couples the stress-field cracking to the growth (growth_cracks.h): the initial interface
   // cracks now, then again after every step. Throws StressParamError for a parameter the

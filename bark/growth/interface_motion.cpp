@@ -137,7 +137,7 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
   // vertex, evaluated in parallel).
   std::vector<Eigen::Vector3d> target(movers.size());
   std::vector<uint8_t> active(movers.size(), 0);
-  const bool turned = growth.has_directions();
+  const bool turned = growth.has_directions() || !c.direction.empty();
   // Sec. 4.6: with growth turned off the normal, vertices slide, and their UVs move through
   // the texture Jacobian taken before the motion.
   const std::vector<TextureGradient> gradients =
@@ -147,10 +147,14 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     // Sec. 4.4: a painted speed map scales the growth where it is painted.
     const double d = growth.thickening(t0, t1, c.points[v].cast<float>(), normals[v].cast<float>()) *
                      (c.speed.empty() ? 1.0 : double(c.speed[v]));
-    // Sec. 4.4: a stroke's direction turns the growth from the normal.
-    const Eigen::Vector3d dir = turned ? Eigen::Vector3d(growth.growth_direction(c.points[v].cast<float>(), normals[v].cast<float>())
-                                                             .cast<double>())
-                                       : normals[v];
+    // Sec. 4.4: a stroke's direction, then a painted one, turn the growth from the normal.
+    Eigen::Vector3d dir = normals[v];
+    if (turned) {
+      const Vec3f n = normals[v].cast<float>();
+      Vec3f turn = growth.growth_direction(c.points[v].cast<float>(), n);
+      if (!c.direction.empty()) turn = GrowthFunction::turned_towards(turn, n, c.direction[v]);
+      dir = turn.cast<double>();
+    }
     target[i] = c.points[v] + d * dir;
     active[i] = d != 0 && std::isfinite(d);
   });

@@ -13,7 +13,7 @@
 // not lower their worst quality, making room for the next step.
 // The rest of the step's repair (splits, collapses, quality flips) is growth_repair_step
 // (complex_repair.h); obstacles and contact are growth_contact.h, cracks growth_cracks.h.
-// Strokes with a direction (sec. 4.4) turn a vertex's move off its normal; its UV then moves
+// Strokes with a direction and painted directions (sec. 4.4, TetComplex::direction) turn a vertex's move off its normal; its UV then moves
 // with the tangential part through the texture Jacobian (sec. 4.6, texture_transport.h).
 #pragma once
 

@@ -153,6 +153,7 @@ uint32_t TetComplex::add_point_between(uint32_t a, uint32_t b, double s) {
   frozen.push_back(frozen[a] && frozen[b]);
   if (!uv.empty()) uv.push_back(uv_between(uv[a], uv[b], s));
   if (!speed.empty()) speed.push_back(float((1 - s) * double(speed[a]) + s * double(speed[b])));
+  if (!direction.empty()) direction.push_back(float(1 - s) * direction[a] + float(s) * direction[b]);
   source_vertex.push_back(-1);
   if (!on_crack.empty()) on_crack.push_back(on_crack[a] && on_crack[b]);
   parents.resize(m, {kNoParent, kNoParent});

@@ -48,6 +48,9 @@ struct TetComplex {
   std::vector<int32_t> source_vertex;
   // Per point: the user's speed factor (sec. 4.4, a painted map; empty: 1 everywhere).
   std::vector<float> speed;
+  // Per point: a painted growth direction (sec. 4.4; its length, up to 1, is how far it turns
+  // the growth from the normal; empty or zero: the normal).
+  std::vector<Eigen::Vector3f> direction;
   // Per point, for crack coupling (thesis sec. 5; empty unless cracks are coupled): 1 on a
   // crack edge, so coarsening never collapses it away; and the two points whose edge a split
   // made it on (kNoParent for TetGen's and the input's points), so that a crack edge split by

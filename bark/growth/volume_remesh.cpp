@@ -62,6 +62,7 @@ bool retetrahedralize(TetComplex& c, const std::vector<GrowthObstacle>& obstacle
   out.source_vertex.resize(n);
   if (!out.uv.empty()) out.uv.resize(n);
   if (!out.speed.empty()) out.speed.resize(n);
+  if (!out.direction.empty()) out.direction.resize(n);
   if (!out.on_crack.empty()) out.on_crack.resize(n);
   // Every slot that is not an interface point starts as an unused point without attributes.
   for (uint32_t p = 0; p < n; ++p) {
@@ -72,6 +73,7 @@ bool retetrahedralize(TetComplex& c, const std::vector<GrowthObstacle>& obstacle
     out.source_vertex[p] = -1;
     if (!out.uv.empty()) out.uv[p] = Eigen::Vector2d::Zero();
     if (!out.speed.empty()) out.speed[p] = 1.0f;
+    if (!out.direction.empty()) out.direction[p] = Eigen::Vector3f::Zero();
     if (!out.on_crack.empty()) out.on_crack[p] = 0;
     if (p < out.parents.size()) out.parents[p] = {TetComplex::kNoParent, TetComplex::kNoParent};
   }

@@ -34,15 +34,25 @@ Vec3f GrowthFunction::growth_direction(const Vec3f& p, const Vec3f& n) const {
     const Vec3f t = (1 - w) * d + w * s.direction.normalized();
     if (t.squaredNorm() > 1e-12f) d = t.normalized();
   }
-  // Keep a share of the normal: d = cos·n + sin·(tangent) with cos ≥ kMinNormalShare.
+  return keep_normal_share(d, n);
+}
+
+Vec3f GrowthFunction::keep_normal_share(const Vec3f& d, const Vec3f& n) {
+  // d = cos·n + sin·(tangent) with cos ≥ kMinNormalShare.
   const float along = d.dot(n);
-  if (along < kMinNormalShare) {
-    Vec3f tangent = d - along * n;
-    const float len = tangent.norm();
-    tangent = len > 1e-12f ? Vec3f(tangent / len) : Vec3f::Zero();
-    d = kMinNormalShare * n + std::sqrt(1 - kMinNormalShare * kMinNormalShare) * tangent;
-  }
-  return d;
+  if (along >= kMinNormalShare) return d;
+  Vec3f tangent = d - along * n;
+  const float len = tangent.norm();
+  tangent = len > 1e-12f ? Vec3f(tangent / len) : Vec3f::Zero();
+  return kMinNormalShare * n + std::sqrt(1 - kMinNormalShare * kMinNormalShare) * tangent;
+}
+
+Vec3f GrowthFunction::turned_towards(const Vec3f& d, const Vec3f& n, const Vec3f& painted) {
+  const float len = painted.norm();
+  if (!(len > 1e-12f)) return d;
+  const float w = std::min(1.0f, len);
+  const Vec3f t = (1 - w) * d + w * (painted / len);
+  return keep_normal_share(t.squaredNorm() > 1e-12f ? Vec3f(t.normalized()) : n, n);
 }
 
 double GrowthFunction::stroke_factor(const Vec3f& p) const {

@@ -49,6 +49,12 @@ struct GrowthFunction {
   // still moves outwards where it grows).
   Vec3f growth_direction(const Vec3f& position, const Vec3f& normal) const;
   bool has_directions() const;
+  // Sec. 4.4's painted directions: d turned towards `painted` by its length w (clamped to 1),
+  // (1 − w)·d + w·painted/|painted| normalized, keeping kMinNormalShare of the normal n.
+  static Vec3f turned_towards(const Vec3f& d, const Vec3f& n, const Vec3f& painted);
+  // d (unit) with at least kMinNormalShare of the unit normal n: d itself, or turned back
+  // towards n in the plane of the two.
+  static Vec3f keep_normal_share(const Vec3f& d, const Vec3f& n);
   static constexpr float kMinNormalShare = 0.2f;
 };
 

@@ -36,6 +36,21 @@ TEST(GrowthDirection, AStrokeTurnsTheNormalTowardsItsDirectionByItsWeightAndNeve
   EXPECT_GT(d.x(), 0.9f);
 }
 
+TEST(GrowthDirection, APaintedDirectionTurnsTheGrowthByItsLengthUpToOne) {
+  const Vec3f n(0, 1, 0), t(1, 0, 0);
+  // Zero: nothing turns.
+  EXPECT_EQ(GrowthFunction::turned_towards(n, n, Vec3f::Zero()), n);
+  // Length 0.5 along the tangent: halfway, (n + t)/√2.
+  EXPECT_TRUE(GrowthFunction::turned_towards(n, n, 0.5f * t).isApprox(Vec3f(1, 1, 0).normalized(), 1e-6f));
+  // Length 3: the whole way (weight clamped to 1), held to kMinNormalShare of the normal.
+  const Vec3f d = GrowthFunction::turned_towards(n, n, 3.0f * t);
+  EXPECT_NEAR(d.norm(), 1.0f, 1e-6f);
+  EXPECT_NEAR(d.dot(n), GrowthFunction::kMinNormalShare, 1e-6f);
+  EXPECT_GT(d.x(), 0.97f);
+  // Length 1 along the normal itself: the normal.
+  EXPECT_TRUE(GrowthFunction::turned_towards(n, n, n).isApprox(n, 1e-6f));
+}
+
 TEST(TextureTransport, ATangentialMoveMovesTheUvByTheTextureJacobianAndANormalOneDoesNot) {
   // A plane z = 0 with uv = (x / 4, y / 3) (a linear map: every face's ∂u/∂x is exact) and
   // a second patch across a wrapped seam in u.

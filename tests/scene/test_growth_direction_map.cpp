@@ -1,0 +1,124 @@
+// Growth directions painted on the vertices of a glTF mesh (scene/growth_desc.h "direction_map";
+// Kratt et al., Woodification, sec. 4.4's user-defined growth directions): a VEC3 attribute turns
+// the growth from the normal by its length (up to 1), in the scene's space, and a file without
+// it, an attribute of another type, or one on a mesh that has no file are refused naming where.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bark/geometry/procedural_meshes.h"
+#include "io/gltf_writer.h"
+#include "scene/growth_run.h"
+#include "scene/mesh_source.h"
+#include "scene/scene_parser.h"
+#include "tests/support/test_util.h"
+#include "util/errors.h"
+
+using namespace phellem;
+
+namespace {
+
+// An icosphere of radius 0.1 as a glb with a VEC3 `_GROWTH_DIRECTION` = `paint(unit position)`
+// (or a SCALAR `_SCALAR`, when `scalar`).
+std::string painted_sphere(const std::string& dir, const std::string& file, Vec3f (*paint)(const Eigen::Vector3d&),
+                           bool scalar = false) {
+  const bark::TriMesh s = bark::icosphere(3, 0.1);
+  GlbMesh glb;
+  glb.vertices = to_mesh_data(s);
+  compute_vertex_normals(glb.vertices);
+  std::vector<Vec3f> values;
+  for (const auto& p : s.positions) values.push_back(paint(p.normalized()));
+  if (scalar) {
+    std::vector<float> x;
+    for (const Vec3f& v : values) x.push_back(v.x());
+    glb.scalars = {{"_SCALAR", x}};
+  } else {
+    glb.vectors = {{"_GROWTH_DIRECTION", values}};
+  }
+  GlbPart part;
+  part.name = "bark";
+  part.indices = glb.vertices.indices;
+  glb.parts = {part};
+  const std::string path = dir + "/" + file;
+  write_glb(path, "sphere", glb);
+  return path;
+}
+
+std::string scene(const std::string& glb, const std::string& growth_extra, const std::string& transform = "") {
+  return R"({"objects": [{"type": "mesh", "name": "s", "file": ")" + glb + "\"" + transform +
+         R"(, "growth": {"steps": 6, "years": 10, "age_scale": 10, "thickness": 0.03)" + growth_extra + "}}]}";
+}
+
+// The point of the growth volume that starts at the top of the sphere, followed by its index
+// through the steps (vertex identity), where it ends; and the height of the grown surface.
+std::pair<Eigen::Vector3d, double> followed_top(const SceneDesc& scene) {
+  long top = -1;
+  Eigen::Vector3d at = Eigen::Vector3d::Zero();
+  const GrowthRun run = run_growth_object(scene, 0, false, [&](const bark::CambialGrowth& g) {
+    const bark::TetComplex& c = g.complex();
+    if (top < 0)  // after the first step, which moves it less than a millimetre
+      for (uint32_t i = 0; i < c.points.size(); ++i)
+        if (c.on_interface[i] && c.source_vertex[i] >= 0 && (top < 0 || c.points[i].y() > c.points[size_t(top)].y())) top = i;
+    at = c.points[size_t(top)];
+  });
+  double height = -1e300;
+  for (const auto& p : run.surface->positions) height = std::max(height, p.y());
+  return {at, height};
+}
+
+}  // namespace
+
+TEST(GrowthDirectionMap, APaintedDirectionLeansTheGrowthWhereItIsPaintedAndFollowsTheTransform) {
+  const std::string dir = test::temp_dir("growth_direction_map");
+  // The upper cap painted +x at full length, the rest not at all.
+  const std::string glb = painted_sphere(dir, "lean.glb", [](const Eigen::Vector3d& n) {
+    return n.y() > 0.5 ? Vec3f(1, 0, 0) : Vec3f::Zero();
+  });
+  const std::string map = R"(, "direction_map": {"attribute": "_GROWTH_DIRECTION"})";
+  const auto [plain, plain_height] = followed_top(parse_scene(scene(glb, ""), dir + "/s.json", dir));
+  const auto [lean, lean_height] = followed_top(parse_scene(scene(glb, map), dir + "/s.json", dir));
+  // 0.03 × (1 − e^−1) ≈ 19 mm of growth: turned to the normal's least share (0.2), the point at
+  // the top slides about 18 mm towards +x; unturned, it rises along the axis.
+  EXPECT_LT(std::abs(plain.x()), 0.001) << plain.transpose();
+  EXPECT_GT(plain.y(), 0.115) << plain.transpose();
+  EXPECT_GT(lean.x(), 0.015) << lean.transpose();
+  // Turned from the normal, the cap grows outwards less: the surface ends lower.
+  EXPECT_LT(lean_height, plain_height - 0.005) << lean_height << " vs " << plain_height;
+  // Turned a quarter around y by the object's transform, the painted +x points along −z.
+  const auto [turned, turned_height] =
+      followed_top(parse_scene(scene(glb, map, R"(, "transform": {"rotate_deg": [0, 90, 0]})"), dir + "/s.json", dir));
+  EXPECT_LT(turned.z(), -0.015) << turned.transpose();
+  EXPECT_LT(std::abs(turned.x()), 0.002) << turned.transpose();
+}
+
+TEST(GrowthDirectionMap, AMissingOrScalarAttributeAndMeshesWithoutAFileAreRefused) {
+  const std::string dir = test::temp_dir("growth_direction_map_bad");
+  const std::string map = R"(, "direction_map": {"attribute": "_GROWTH_DIRECTION"})";
+  const std::string scalar = painted_sphere(dir, "scalar.glb", [](const Eigen::Vector3d&) { return Vec3f(1, 0, 0); }, true);
+  try {
+    run_growth_object(parse_scene(scene(scalar, map), dir + "/s.json", dir), 0, false);
+    FAIL() << "a mesh without the attribute grew";
+  } catch (const UserError& e) {
+    EXPECT_EQ(e.what(), scalar + ": meshes[0].primitives[0].attributes: has no vertex attribute _GROWTH_DIRECTION");
+  }
+  try {
+    run_growth_object(parse_scene(scene(scalar, R"(, "direction_map": {"attribute": "_SCALAR"})"), dir + "/s.json", dir), 0, false);
+    FAIL() << "a scalar attribute turned the growth";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("meshes[0].primitives[0].attributes._SCALAR"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("expected 3"), std::string::npos) << e.what();
+  }
+  const auto refused_at = [&](const std::string& json) {
+    try {
+      parse_scene(json, dir + "/s.json", dir);
+    } catch (const UserError& e) {
+      return e.where();
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(refused_at(scene(scalar, R"(, "direction_map": {"attribute": ""})")), "/objects/0/growth/direction_map/attribute");
+  EXPECT_EQ(refused_at(scene(scalar, R"(, "direction_map": {})")), "/objects/0/growth/direction_map/attribute");
+  EXPECT_EQ(refused_at(R"({"objects": [{"type": "mesh", "procedural": {"shape": "log"},
+      "growth": {"direction_map": {"attribute": "_GROWTH_DIRECTION"}}}]})"),
+            "/objects/0/growth/direction_map/attribute");
+}
