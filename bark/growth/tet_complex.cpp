@@ -113,27 +113,35 @@ T* tetgen_array(size_t n) {
 std::vector<std::array<uint32_t, 3>> TetComplex::interface_faces() const { return boundary_faces(kInside); }
 
 std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which) const {
-  std::map<std::array<uint32_t, 3>, std::pair<size_t, int>> seen;  // sorted face -> (tet, opposite corner)
-  std::vector<std::array<uint32_t, 3>> out;
+  // Every face of every tetrahedron by its sorted corners, sorted: the two tetrahedra sharing a
+  // face are next to each other (a sort of flat records, several times faster than a map over
+  // the hundreds of thousands of tetrahedra of a grown volume).
+  struct Record {
+    std::array<uint32_t, 3> key;
+    uint32_t tet;
+    int face;
+  };
+  std::vector<Record> records;
+  records.reserve(4 * tets.size());
   for (size_t t = 0; t < tets.size(); ++t)
     for (int f = 0; f < 4; ++f) {
-      std::array<uint32_t, 3> face{tets[t][size_t(kFace[f][0])], tets[t][size_t(kFace[f][1])], tets[t][size_t(kFace[f][2])]};
-      std::array<uint32_t, 3> key = face;
+      std::array<uint32_t, 3> key{tets[t][size_t(kFace[f][0])], tets[t][size_t(kFace[f][1])], tets[t][size_t(kFace[f][2])]};
       std::sort(key.begin(), key.end());
-      const auto it = seen.find(key);
-      if (it == seen.end()) {
-        seen.emplace(key, std::make_pair(t, f));
-        continue;
-      }
-      const size_t u = it->second.first;
-      if ((label[t] == which) != (label[u] == which)) {
-        // Oriented outwards from the tetrahedron labelled `which`.
-        const size_t in = label[t] == which ? t : u;
-        const int fi = label[t] == which ? f : it->second.second;
-        out.push_back({tets[in][size_t(kFace[fi][0])], tets[in][size_t(kFace[fi][1])], tets[in][size_t(kFace[fi][2])]});
-      }
-      seen.erase(it);
+      records.push_back({key, uint32_t(t), f});
     }
+  std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) { return a.key < b.key; });
+  std::vector<std::array<uint32_t, 3>> out;
+  for (size_t i = 0; i + 1 < records.size(); ++i) {
+    const Record &r = records[i], &q = records[i + 1];
+    if (r.key != q.key) continue;
+    if ((label[r.tet] == which) != (label[q.tet] == which)) {
+      // Oriented outwards from the tetrahedron labelled `which`.
+      const Record& in = label[r.tet] == which ? r : q;
+      const auto& T = tets[in.tet];
+      out.push_back({T[size_t(kFace[in.face][0])], T[size_t(kFace[in.face][1])], T[size_t(kFace[in.face][2])]});
+    }
+    ++i;  // a face has two tetrahedra at most
+  }
   std::sort(out.begin(), out.end());
   return out;
 }
