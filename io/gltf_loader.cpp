@@ -123,10 +123,11 @@ MaterialDesc convert_material(const tinygltf::Model& m, int index, const std::st
 
 }  // namespace
 
-LoadedModel load_gltf(const std::string& path, const std::string& attribute, bool attribute_vec3) {
+LoadedModel load_gltf(const std::string& path, const std::vector<AttributeRequest>& attributes) {
   const tinygltf::Model model = open_gltf(path);
   GltfReader rd(model, path);
   LoadedModel out;
+  out.attributes.resize(attributes.size());
   for (size_t i = 0; i < model.materials.size(); ++i) out.materials.push_back(convert_material(model, int(i), path));
 
   std::function<void(int, const Mat4f&, int)> visit_node = [&](int ni, const Mat4f& parent, int depth) {
@@ -181,20 +182,23 @@ LoadedModel load_gltf(const std::string& path, const std::string& attribute, boo
           rd.fail(where + ".material", "material index " + std::to_string(prim.material) + " out of range");
         md.material = prim.material;
         if (!md.normals.empty()) compute_tangents(md);
-        if (!attribute.empty()) {
-          const auto it = prim.attributes.find(attribute);
-          if (it == prim.attributes.end()) rd.fail(where + ".attributes", "has no vertex attribute " + attribute);
-          const std::string at = where + ".attributes." + attribute;
-          std::vector<float> a = attribute_vec3 ? rd.floats(it->second, 3, at) : rd.first_components(it->second, at);
-          if (a.size() != (attribute_vec3 ? 3 * nv : nv)) rd.fail(at, "count differs from POSITION");
-          if (attribute_vec3) {
-            const Mat3f linear = world.topLeftCorner<3, 3>();
-            for (size_t v = 0; v < nv; ++v) {
-              const Vec3f d = linear * Vec3f(a[3 * v], a[3 * v + 1], a[3 * v + 2]);
-              for (int k = 0; k < 3; ++k) a[3 * v + size_t(k)] = d[k];
-            }
+        for (size_t r = 0; r < attributes.size(); ++r) {
+          const AttributeRequest& req = attributes[r];
+          const auto it = prim.attributes.find(req.name);
+          if (it == prim.attributes.end()) rd.fail(where + ".attributes", "has no vertex attribute " + req.name);
+          const std::string at = where + ".attributes." + req.name;
+          const std::vector<float> a = req.vec3 ? rd.floats(it->second, 3, at) : rd.first_components(it->second, at);
+          if (a.size() != (req.vec3 ? 3 * nv : nv)) rd.fail(at, "count differs from POSITION");
+          std::vector<float>& values = out.attributes[r];
+          if (!req.vec3) {
+            values.insert(values.end(), a.begin(), a.end());
+            continue;
           }
-          out.attribute.push_back(std::move(a));
+          const Mat3f linear = world.topLeftCorner<3, 3>();
+          for (size_t v = 0; v < nv; ++v) {
+            const Vec3f d = linear * Vec3f(a[3 * v], a[3 * v + 1], a[3 * v + 2]);
+            values.insert(values.end(), d.data(), d.data() + 3);
+          }
         }
         out.meshes.push_back(std::move(md));
       }
@@ -218,14 +222,14 @@ LoadedModel load_gltf(const std::string& path, const std::string& attribute, boo
   return out;
 }
 
-LoadedModel load_mesh_file(const std::string& path, const std::string& attribute, bool attribute_vec3) {
+LoadedModel load_mesh_file(const std::string& path, const std::vector<AttributeRequest>& attributes) {
   const std::string ext = fs::path(path).extension().string();
   if (ext == ".obj") {
-    if (!attribute.empty())
-      throw UserError(path, "", "an OBJ file carries no vertex attribute " + attribute + "; use a glTF file (.glb/.gltf)");
+    if (!attributes.empty())
+      throw UserError(path, "", "an OBJ file carries no vertex attribute " + attributes.front().name + "; use a glTF file (.glb/.gltf)");
     return load_obj(path);
   }
-  return load_gltf(path, attribute, attribute_vec3);
+  return load_gltf(path, attributes);
 }
 
 }  // namespace phellem

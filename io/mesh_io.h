@@ -10,22 +10,27 @@
 
 namespace phellem {
 
+// A vertex attribute to read besides the geometry (glTF only), by name (e.g. "COLOR_0" or a
+// custom "_GROWTH_SPEED"): the first component of any SCALAR to VEC4 accessor, or with `vec3`
+// a VEC3 direction, turned by its node's transform like a position's offset.
+struct AttributeRequest {
+  std::string name;
+  bool vec3 = false;
+};
+
 struct LoadedModel {
   std::vector<MeshData> meshes;         // material indexes `materials` (-1: none)
   std::vector<MaterialDesc> materials;  // from the file (glTF PBR / OBJ MTL)
-  // Per mesh, per vertex: the first component of the vertex attribute asked for by name (glTF
-  // only, e.g. "COLOR_0" or a custom "_GROWTH_SPEED"), or with `attribute_vec3` its three
-  // components (a VEC3 direction, turned by the node's transform like a position's offset);
-  // empty when none was asked for.
-  std::vector<std::vector<float>> attribute;
+  // Per attribute asked for: its values over the vertices of every mesh in order (1 or 3 a vertex).
+  std::vector<std::vector<float>> attributes;
 };
 
 // Every problem is a UserError naming the file and the glTF element (e.g.
 // "meshes[0].primitives[1].indices") or OBJ line.
-// `attribute`: a vertex attribute every triangle primitive must carry (glTF; an OBJ file has
-// none and is refused), read into LoadedModel::attribute.
-LoadedModel load_mesh_file(const std::string& path, const std::string& attribute = {}, bool attribute_vec3 = false);
-LoadedModel load_gltf(const std::string& path, const std::string& attribute = {}, bool attribute_vec3 = false);
+// `attributes`: vertex attributes every triangle primitive must carry (glTF; an OBJ file has
+// none and is refused), read into LoadedModel::attributes.
+LoadedModel load_mesh_file(const std::string& path, const std::vector<AttributeRequest>& attributes = {});
+LoadedModel load_gltf(const std::string& path, const std::vector<AttributeRequest>& attributes = {});
 LoadedModel load_obj(const std::string& path);
 
 }  // namespace phellem

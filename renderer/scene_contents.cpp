@@ -148,7 +148,7 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
       if (!input_material.empty()) out.assign(grown.triangles.size(), input_material[0]);
       return out;
     }
-    for (uint32_t f : bark::nearest_input_faces(object_trimesh(o), grown)) out.push_back(input_material[f]);
+    for (uint32_t f : bark::nearest_input_faces(model_trimesh(model, o), grown)) out.push_back(input_material[f]);
     return out;
   };
   for (size_t oi = 0; oi < desc.objects.size(); ++oi) {

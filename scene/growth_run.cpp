@@ -31,10 +31,16 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
     obstacles.push_back({obstacle_mesh(desc.objects.at(g.obstacles[k])), g.where.path + "/obstacles/" + std::to_string(k)});
   // Meshes that cannot grow (open, overlapping) are reported at the growth block and at the
   // obstacle's entry in it.
-  std::vector<float> speed;
+  // The painted attributes (sec. 4.4) are read with the mesh: a speed, then a direction.
   const std::string attribute = g.speed_map ? g.speed_map->attribute : std::string();
-  const bark::TriMesh surface = object_trimesh(obj, attribute, &speed);
+  std::vector<AttributeRequest> requests;
+  if (!attribute.empty()) requests.push_back({attribute, false});
+  if (!g.direction_attribute.empty()) requests.push_back({g.direction_attribute, true});
+  std::vector<std::vector<float>> painted;
+  const bark::TriMesh surface = object_trimesh(obj, requests, &painted);
+  std::vector<float> speed;
   if (!attribute.empty()) {
+    speed = std::move(painted.front());
     // Painted on the vertices (sec. 4.4): the attribute's first component × scale.
     for (size_t v = 0; v < speed.size(); ++v) {
       if (!(speed[v] >= 0 && speed[v] <= 1e6f))
@@ -51,8 +57,7 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
   // Painted directions (sec. 4.4): a VEC3 attribute, in the scene's space.
   std::vector<Eigen::Vector3f> direction;
   if (!g.direction_attribute.empty()) {
-    std::vector<float> d;
-    object_trimesh_vec3(obj, g.direction_attribute, &d);
+    const std::vector<float>& d = painted.back();
     if (d.size() != 3 * surface.positions.size()) throw std::logic_error("start_growth: directions and vertices differ");
     for (size_t v = 0; v < surface.positions.size(); ++v) {
       const Eigen::Vector3f D(d[3 * v], d[3 * v + 1], d[3 * v + 2]);
@@ -92,11 +97,11 @@ std::shared_ptr<const bark::TextureScaleField> start_texture_scale(const bark::C
 
 GrownBark grown_bark(const bark::CambialGrowth& g, const GrowthDesc& desc, const bark::TextureScaleField& start_scale) {
   GrownBark b;
-  std::vector<uint32_t> source;
   auto surface = std::make_shared<bark::TriMesh>(bark::cut_uv_seams(bark::extract_interface(g.complex()).mesh));
   if (g.cracks()) {
     std::shared_ptr<const bark::CrackedMesh> cracked = g.cracks()->result();
     auto cut = std::make_shared<bark::CrackedMesh>(*cracked);
+    std::vector<uint32_t> source;
     cut->mesh = bark::cut_uv_seams(cracked->mesh, &source);
     // Copies at a seam carry their vertex's crack attributes; crack edges keep the originals.
     for (size_t v = cracked->mesh.positions.size(); v < source.size(); ++v) {

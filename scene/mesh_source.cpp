@@ -79,25 +79,24 @@ DicingParams tree_mesh_dicing(const ObjectDesc& o) {
 
 bark::TriMesh object_trimesh(const ObjectDesc& o) { return object_trimesh(o, {}, nullptr); }
 
-namespace {
-
-bark::TriMesh object_trimesh_with(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values, bool vec3);
-
-}  // namespace
-
-bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values) {
-  return object_trimesh_with(o, attribute, values, false);
+bark::TriMesh model_trimesh(const LoadedModel& model, const ObjectDesc& o) {
+  bark::TriMesh t;
+  for (const MeshData& m : model.meshes) {
+    const uint32_t base = uint32_t(t.positions.size());
+    for (const Vec3f& p : m.positions) t.positions.push_back(p.cast<double>());
+    for (size_t k = 0; k < m.positions.size(); ++k)
+      t.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
+    for (size_t k = 0; k + 2 < m.indices.size(); k += 3)
+      t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
+  }
+  const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
+  for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
+  return t;
 }
 
-bark::TriMesh object_trimesh_vec3(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values) {
-  if (attribute.empty()) throw std::logic_error("object_trimesh_vec3: no attribute");
-  return object_trimesh_with(o, attribute, values, true);
-}
-
-namespace {
-
-bark::TriMesh object_trimesh_with(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values, bool vec3) {
-  if (!attribute.empty() && (o.type != ObjectType::Mesh || o.procedural || !values))
+bark::TriMesh object_trimesh(const ObjectDesc& o, const std::vector<AttributeRequest>& attributes,
+                             std::vector<std::vector<float>>* values) {
+  if (!attributes.empty() && (o.type != ObjectType::Mesh || o.procedural || !values))
     throw std::logic_error("object_trimesh: a vertex attribute needs a mesh file");
   bark::TriMesh t;
   if (o.type == ObjectType::Tree) {
@@ -138,32 +137,24 @@ bark::TriMesh object_trimesh_with(const ObjectDesc& o, const std::string& attrib
   }
   if (o.procedural) {
     t = procedural_trimesh(*o.procedural);
-  } else {
-    const LoadedModel model = load_mesh_file(o.file, attribute, vec3);
-    if (values) values->clear();
-    for (const auto& a : model.attribute) values->insert(values->end(), a.begin(), a.end());
-    for (const MeshData& m : model.meshes) {
-      const uint32_t base = uint32_t(t.positions.size());
-      for (const Vec3f& p : m.positions) t.positions.push_back(p.cast<double>());
-      for (size_t k = 0; k < m.positions.size(); ++k)
-        t.uvs.push_back(m.uvs.size() == m.positions.size() ? Eigen::Vector2d(m.uvs[k].cast<double>()) : Eigen::Vector2d::Zero());
-      for (size_t k = 0; k + 2 < m.indices.size(); k += 3)
-        t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
-    }
+    const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
+    for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
+    return t;
   }
-  const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
-  for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
-  if (vec3 && values) {
-    const Eigen::Matrix3f L = o.transform.matrix.topLeftCorner<3, 3>();
-    for (size_t v = 0; v + 2 < values->size(); v += 3) {
-      const Eigen::Vector3f d = L * Eigen::Vector3f((*values)[v], (*values)[v + 1], (*values)[v + 2]);
-      for (int k = 0; k < 3; ++k) (*values)[v + size_t(k)] = d[k];
+  LoadedModel model = load_mesh_file(o.file, attributes);
+  t = model_trimesh(model, o);
+  if (values) *values = std::move(model.attributes);
+  const Eigen::Matrix3f L = o.transform.matrix.topLeftCorner<3, 3>();
+  for (size_t k = 0; k < attributes.size(); ++k) {
+    if (!attributes[k].vec3) continue;
+    std::vector<float>& a = (*values)[k];
+    for (size_t v = 0; v + 2 < a.size(); v += 3) {
+      const Eigen::Vector3f d = L * Eigen::Vector3f(a[v], a[v + 1], a[v + 2]);
+      for (int c = 0; c < 3; ++c) a[v + size_t(c)] = d[c];
     }
   }
   return t;
 }
-
-}  // namespace
 
 MeshData to_mesh_data(const bark::TriMesh& t) {
   MeshData m;

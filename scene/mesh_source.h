@@ -7,6 +7,7 @@
 #include "bark/geometry/mesh_data.h"
 #include "bark/geometry/tessellation.h"
 #include "bark/geometry/tri_mesh.h"
+#include "io/mesh_io.h"
 #include "scene/scene_desc.h"
 
 namespace phellem {
@@ -15,12 +16,14 @@ namespace phellem {
 // (tree_mesh_dicing) and joined at the branchings, with flat caps on the open ends: one closed
 // surface (bark/geometry/tube_junctions.h), which a growing tree requires of every branch.
 bark::TriMesh object_trimesh(const ObjectDesc& o);
-// The same for a mesh file, with the first component of a vertex attribute of every triangle
-// primitive (glTF; mesh_io.h) into `values`, one per vertex of the result.
-bark::TriMesh object_trimesh(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values);
-// The same with a VEC3 attribute (3 values per vertex), turned by the file's node transforms and
-// the object's transform as offsets are (their linear parts).
-bark::TriMesh object_trimesh_vec3(const ObjectDesc& o, const std::string& attribute, std::vector<float>* values);
+// The same for a mesh file, with vertex attributes of every triangle primitive (glTF; mesh_io.h)
+// read in the same pass: (*values)[k] holds attribute k over the vertices of the result (a VEC3
+// one also turned by the object's transform, as offsets are).
+bark::TriMesh object_trimesh(const ObjectDesc& o, const std::vector<AttributeRequest>& attributes,
+                             std::vector<std::vector<float>>* values);
+// A mesh file already loaded as object o's: its triangles as one TriMesh, the object's
+// transform applied (what object_trimesh gives for the file, without reading it again).
+bark::TriMesh model_trimesh(const LoadedModel& model, const ObjectDesc& o);
 // The object-space dicing of a tree's parts for object_trimesh: the stress bark's preprocess
 // edge_length when set, else with growth the growth's edge_length band's maximum / 1.5, else a
 // hundredth of the trunk's circumference.

@@ -6,6 +6,7 @@
 // texture as its neighbours do.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -19,5 +20,13 @@ namespace phellem::bark {
 // the result the vertex of `m` it copies (the identity on the first m.positions.size()).
 // A mesh without UVs is returned as is.
 TriMesh cut_uv_seams(const TriMesh& m, std::vector<uint32_t>* source = nullptr);
+
+// b − a the short way across a wrapped seam: each axis shifted by whole periods into [−½, ½].
+inline Eigen::Vector2d wrapped_uv_delta(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  Eigen::Vector2d d = b - a;
+  d.x() -= std::round(d.x());
+  d.y() -= std::round(d.y());
+  return d;
+}
 
 }  // namespace phellem::bark

@@ -1,8 +1,8 @@
 #include "bark/growth/complex_repair.h"
 
+#include "bark/growth/free_vertex_removal.h"
 #include "bark/growth/interface_coarsening.h"
 #include "bark/growth/interface_refinement.h"
-#include "bark/growth/free_vertex_removal.h"
 #include "bark/growth/tet_flips.h"
 
 namespace phellem::bark {

@@ -1,6 +1,5 @@
 #include "bark/growth/tet_complex.h"
 
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Surface_mesh.h>
@@ -11,6 +10,7 @@
 #include <map>
 #include <optional>
 
+#include "bark/geometry/uv_seams.h"
 #include "bark/growth/outside_lattice.h"
 #include "bark/growth/tetgen_process.h"
 #include "util/errors.h"
@@ -147,10 +147,7 @@ std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which) c
 }
 
 Eigen::Vector2d TetComplex::uv_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double s) {
-  Eigen::Vector2d d = b - a;
-  d.x() -= std::round(d.x());
-  d.y() -= std::round(d.y());
-  return a + s * d;
+  return a + s * wrapped_uv_delta(a, b);
 }
 
 uint32_t TetComplex::add_point_between(uint32_t a, uint32_t b, double s) {

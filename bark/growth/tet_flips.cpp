@@ -1,12 +1,12 @@
 #include "bark/growth/tet_flips.h"
 
-#include "bark/growth/free_vertex_removal.h"
-
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <limits>
 #include <tuple>
+
+#include "bark/growth/free_vertex_removal.h"
 
 namespace phellem::bark {
 

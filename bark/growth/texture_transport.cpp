@@ -4,6 +4,8 @@
 
 #include <Eigen/Dense>
 
+#include "bark/geometry/uv_seams.h"
+
 namespace phellem::bark {
 
 std::vector<TextureGradient> texture_gradients(const std::vector<Eigen::Vector3d>& points,
@@ -11,18 +13,13 @@ std::vector<TextureGradient> texture_gradients(const std::vector<Eigen::Vector3d
                                                const std::vector<std::array<uint32_t, 3>>& faces) {
   std::vector<TextureGradient> sum(points.size(), TextureGradient::Zero());
   std::vector<double> weight(points.size(), 0.0);
-  const auto wrapped = [](Eigen::Vector2d d) {
-    d.x() -= std::round(d.x());
-    d.y() -= std::round(d.y());
-    return d;
-  };
   for (const auto& f : faces) {
     Eigen::Matrix<double, 3, 2> e;
     e.col(0) = points[f[1]] - points[f[0]];
     e.col(1) = points[f[2]] - points[f[0]];
     Eigen::Matrix2d t;
-    t.col(0) = wrapped(uv[f[1]] - uv[f[0]]);
-    t.col(1) = wrapped(uv[f[2]] - uv[f[0]]);
+    t.col(0) = wrapped_uv_delta(uv[f[0]], uv[f[1]]);
+    t.col(1) = wrapped_uv_delta(uv[f[0]], uv[f[2]]);
     const Eigen::Matrix2d ete = e.transpose() * e;
     const double area2 = std::sqrt(std::max(0.0, ete.determinant()));  // twice the face's area
     if (!(area2 > 1e-20)) continue;

@@ -1,20 +1,23 @@
 #include "bark/growth/volume_remesh.h"
 
 #include <algorithm>
-#include <unordered_map>
-
-#include "util/errors.h"
 
 #include "bark/growth/tet_adjacency.h"
-#include <stdexcept>
+#include "util/errors.h"
 
 namespace phellem::bark {
 
 namespace {
 
-// The faces each rotated to start at its smallest point (orientation kept), sorted.
+// A face rotated to start at its smallest point (its orientation kept).
+std::array<uint32_t, 3> rotated(std::array<uint32_t, 3> f) {
+  std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  return f;
+}
+
+// The faces each rotated, sorted.
 std::vector<std::array<uint32_t, 3>> canonical(std::vector<std::array<uint32_t, 3>> faces) {
-  for (auto& f : faces) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  for (auto& f : faces) f = rotated(f);
   std::sort(faces.begin(), faces.end());
   return faces;
 }
@@ -91,38 +94,25 @@ bool retetrahedralize(TetComplex& c, const std::vector<GrowthObstacle>& obstacle
   // whatever the box does not reach, such as a pocket of the outside the front closed over):
   // the tetrahedra connected without crossing an interface face share a label, inside where
   // they lie on the inner side of one of its faces (each oriented outwards from the inside).
+  const auto oriented = canonical(faces);
   {
     const TetAdjacency adj(out);
-    auto key = [](std::array<uint32_t, 3> f) {
-      std::sort(f.begin(), f.end());
-      return (uint64_t(f[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(f[1]) * 0xC2B2AE3D27D4EB4Full) ^ (uint64_t(f[2]) * 0x165667B19E3779F9ull);
-    };
-    std::unordered_multimap<uint64_t, std::array<uint32_t, 3>> interface;
-    for (auto f : faces) {
-      std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-      interface.emplace(key(f), f);
-    }
-    // 1: the face opposite corner j of t, as the interface has it from t's side inwards (t
-    // inside); −1: the other way (t outside); 0: not an interface face.
+    // 1: the face opposite corner j of t, as the interface has it from t's side outwards (t
+    // inside); −1: the other way round (t outside); 0: not an interface face.
     auto side = [&](uint32_t t, int j) {
-      std::array<uint32_t, 3> f{out.tets[t][size_t(kTetFace[j][0])], out.tets[t][size_t(kTetFace[j][1])],
-                                out.tets[t][size_t(kTetFace[j][2])]};
-      std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-      auto [lo, hi] = interface.equal_range(key(f));
-      for (auto it = lo; it != hi; ++it) {
-        if (it->second == f) return 1;
-        if (it->second[0] == f[0] && it->second[1] == f[2] && it->second[2] == f[1]) return -1;
-      }
+      const auto& T = out.tets[t];
+      const auto f = rotated({T[size_t(kTetFace[j][0])], T[size_t(kTetFace[j][1])], T[size_t(kTetFace[j][2])]});
+      if (std::binary_search(oriented.begin(), oriented.end(), f)) return 1;
+      if (std::binary_search(oriented.begin(), oriented.end(), std::array<uint32_t, 3>{f[0], f[2], f[1]})) return -1;
       return 0;
     };
-    constexpr uint8_t kUnset = 0xff;
-    std::vector<uint8_t> label(out.tets.size(), kUnset);
+    std::vector<uint8_t> visited(out.tets.size(), 0);
     std::vector<uint32_t> component, stack;
     for (uint32_t seed = 0; seed < out.tets.size(); ++seed) {
-      if (label[seed] != kUnset || out.label[seed] == TetComplex::kObstacle) continue;
+      if (visited[seed] || out.label[seed] == TetComplex::kObstacle) continue;
       component.clear();
       stack.assign(1, seed);
-      label[seed] = TetComplex::kOutside;
+      visited[seed] = 1;
       uint8_t found = TetComplex::kOutside;  // a component no interface face bounds: outside
       while (!stack.empty()) {
         const uint32_t t = stack.back();
@@ -134,18 +124,17 @@ bool retetrahedralize(TetComplex& c, const std::vector<GrowthObstacle>& obstacle
             continue;
           }
           const long u = adj.across(out, t, j);
-          if (u < 0 || label[size_t(u)] != kUnset || out.label[size_t(u)] == TetComplex::kObstacle) continue;
-          label[size_t(u)] = TetComplex::kOutside;
+          if (u < 0 || visited[size_t(u)] || out.label[size_t(u)] == TetComplex::kObstacle) continue;
+          visited[size_t(u)] = 1;
           stack.push_back(uint32_t(u));
         }
       }
       for (uint32_t t : component) out.label[t] = found;
     }
   }
-  // Switch Y keeps the interface: the same faces, oriented the same way.
   // Switch Y keeps the interface's triangles unless a point lies on one (a fold of the
   // interface onto itself, which TetGen splits the triangle at): then nothing changes.
-  if (canonical(out.interface_faces()) != canonical(faces)) return false;
+  if (canonical(out.interface_faces()) != oriented) return false;
   c = std::move(out);
   return true;
 }
