@@ -171,6 +171,9 @@ int run_simulate(const cli::Options& o) {
       j["time_s"]["growth"] = growth.t_growth;
       j["time_s"]["growth_setup"] = growth.t_setup;
       j["time_s"]["growth_remesh"] = growth.t_remesh;
+      j["time_s"]["growth_motion"] = growth.t_motion;
+      j["time_s"]["growth_contact"] = growth.t_contact;
+      j["time_s"]["growth_repair"] = growth.t_repair;
       j["time_s"]["growth_crack"] = growth.t_crack;
     }
     write_json_output(out, "--stats", o.stats, j);

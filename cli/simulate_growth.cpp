@@ -99,7 +99,14 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
                               {"frozen", {{"obstacle", st.frozen_obstacle}, {"contact", st.frozen_contact}}},
                               {"rings", run.rings.size()},
                               {"remeshes", {{"made", st.remeshes}, {"refused", st.remesh_refused}}},
-                              {"time_s", {{"setup", st.setup_s}, {"growth", st.steps_s}, {"remesh", st.remesh_s}, {"crack", t_crack}}}};
+                              {"time_s",
+                               {{"setup", st.setup_s},
+                                {"growth", st.steps_s},
+                                {"motion", st.motion_s},
+                                {"contact", st.contact_s},
+                                {"repair", st.repair_s},
+                                {"remesh", st.remesh_s},
+                                {"crack", t_crack}}}};
     if (cracked) summary["crack_length_m"] = cracked->crack_length();
     write_json_output(out, "-o", (dir / (name + ".json")).string(), summary);
     totals.t_write += since(tw);
@@ -111,6 +118,9 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
     totals.t_growth += st.steps_s;
     totals.remeshes += st.remeshes;
     totals.t_remesh += st.remesh_s;
+    totals.t_motion += st.motion_s;
+    totals.t_contact += st.contact_s;
+    totals.t_repair += st.repair_s;
     totals.t_crack += t_crack;
     totals.outputs.push_back(glb);
     if (!run.rings.empty()) totals.outputs.push_back(rings);

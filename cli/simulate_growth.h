@@ -17,7 +17,7 @@ struct GrowthRunTotals {
   int objects = 0;
   long long steps = 0, vertices_start = 0, vertices_end = 0, remeshes = 0;
   double t_setup = 0, t_growth = 0, t_crack = 0, t_write = 0;
-  double t_remesh = 0;  // part of t_growth
+  double t_remesh = 0, t_motion = 0, t_contact = 0, t_repair = 0;  // parts of t_growth
   nlohmann::json outputs = nlohmann::json::array();
 };
 

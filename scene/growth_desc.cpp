@@ -29,11 +29,11 @@ bark::GrowthStroke parse_stroke(JsonObject o) {
   return s;
 }
 
-}  // namespace
-
-float GrowthSpeedMap::at(double u, double v) const {
-  // Bilinear between texel centres, repeating: the coordinates wrapped into [0, 1) first, so
-  // huge or non-finite UVs of a mesh file never reach the integer conversions.
+// Bilinear between texel centres of a width × height map, repeating: the coordinates wrapped
+// into [0, 1) first, so huge or non-finite UVs of a mesh file never reach the integer
+// conversions. `texel(a, b)` is the value at column a, row b.
+template <class Value, class Texel>
+Value bilinear_repeat(int width, int height, double u, double v, Texel texel) {
   if (!std::isfinite(u)) u = 0;
   if (!std::isfinite(v)) v = 0;
   u -= std::floor(u);
@@ -41,14 +41,61 @@ float GrowthSpeedMap::at(double u, double v) const {
   const double x = u * width - 0.5, y = v * height - 0.5;
   const double fx = std::floor(x), fy = std::floor(y);
   const double tx = x - fx, ty = y - fy;
-  auto texel = [&](double i, double j) {
+  auto at = [&](double i, double j) -> Value {
     const long w = long(width), h = long(height);
     const long a = ((long(i) % w) + w) % w, b = ((long(j) % h) + h) % h;
-    return double(values[size_t(b) * size_t(width) + size_t(a)]);
+    return texel(size_t(a), size_t(b));
   };
-  return float((1 - ty) * ((1 - tx) * texel(fx, fy) + tx * texel(fx + 1, fy)) +
-               ty * ((1 - tx) * texel(fx, fy + 1) + tx * texel(fx + 1, fy + 1)));
+  return Value((1 - ty) * ((1 - tx) * at(fx, fy) + tx * at(fx + 1, fy)) + ty * ((1 - tx) * at(fx, fy + 1) + tx * at(fx + 1, fy + 1)));
 }
+
+}  // namespace
+
+float GrowthSpeedMap::at(double u, double v) const {
+  return float(bilinear_repeat<double>(width, height, u, v, [&](size_t a, size_t b) { return double(values[b * size_t(width) + a]); }));
+}
+
+Eigen::Vector2d GrowthDirectionMap::at(double u, double v) const {
+  return bilinear_repeat<Eigen::Vector2d>(width, height, u, v,
+                         [&](size_t a, size_t b) { return Eigen::Vector2d(values[b * size_t(width) + a].cast<double>()); });
+}
+
+namespace {
+
+std::shared_ptr<GrowthDirectionMap> parse_direction_map(JsonObject m, const std::string& base_dir) {
+  auto map = std::make_shared<GrowthDirectionMap>();
+  if (auto a = m.get("attribute")) {
+    if (m.get("file")) a->fail("a direction map is an image \"file\" or a vertex \"attribute\", not both");
+    if (m.get("scale")) a->fail("scale belongs to an image \"file\"; a vertex attribute's length is its own");
+    map->attribute = a->string();
+    if (map->attribute.empty() || map->attribute.size() > 64)
+      a->fail("attribute must name a VEC3 glTF vertex attribute (e.g. \"_GROWTH_DIRECTION\")");
+  } else {
+    if (!m.get("file")) m.fail("file", "a direction map needs an image \"file\" (a flow map) or a vertex \"attribute\"");
+    auto file = m.at("file");
+    const SceneImage img = read_scene_image(file, base_dir);
+    if (img.channels < 2)
+      file.fail("image " + img.path + " has " + std::to_string(img.channels) +
+                " channel; a flow map needs two (red: along u, green: along v)");
+    map->width = img.width;
+    map->height = img.height;
+    map->values.resize(size_t(img.width) * size_t(img.height));
+    for (size_t i = 0; i < map->values.size(); ++i) {
+      const float* p = &img.pixels[i * size_t(img.channels)];
+      // Integer pixels cannot be negative: flow maps store 0.5 + 0.5·d.
+      const Eigen::Vector2f d = img.encoded ? Eigen::Vector2f(2 * p[0] - 1, 2 * p[1] - 1) : Eigen::Vector2f(p[0], p[1]);
+      if (!(d.allFinite() && d.norm() <= 1e6f))
+        file.fail("image " + img.path + " holds a direction longer than 1e6 or not finite at pixel " +
+                  std::to_string(i % size_t(img.width)) + ", " + std::to_string(i / size_t(img.width)));
+      map->values[i] = d;
+    }
+    if (auto w = m.get("scale")) map->scale = in_range(*w, 0, 1000, "scale must lie in [0, 1000] (multiplies the painted directions)");
+  }
+  m.finish();
+  return map;
+}
+
+}  // namespace
 
 GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
   GrowthDesc d;
@@ -98,14 +145,7 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
     m.finish();
     d.speed_map = std::move(map);
   }
-  if (auto v = o.get("direction_map")) {
-    JsonObject m = v->object();
-    auto a = m.at("attribute");
-    d.direction_attribute = a.string();
-    if (d.direction_attribute.empty() || d.direction_attribute.size() > 64)
-      a.fail("attribute must name a VEC3 glTF vertex attribute (e.g. \"_GROWTH_DIRECTION\")");
-    m.finish();
-  }
+  if (auto v = o.get("direction_map")) d.direction_map = parse_direction_map(v->object(), base_dir);
   if (auto v = o.get("obstacles")) {
     for (auto& e : v->array()) d.obstacle_names.push_back(e.string());
   }

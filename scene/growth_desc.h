@@ -12,6 +12,7 @@
 //     "speed_map": {"file": "paint.png", "scale": 1},   // sec. 4.4: speed × scale × map(uv)
 //                  or {"attribute": "COLOR_0"}      // ... × a glTF mesh's vertex attribute (first component)
 //     "direction_map": {"attribute": "_GROWTH_DIRECTION"},  // sec. 4.4: a VEC3 vertex attribute turns the growth
+//                  or {"file": "flow.png", "scale": 1}  // ... or a flow map in texture space (GrowthDirectionMap)
 //     "obstacles": ["wire"],           // names of other mesh or sphere objects
 //     "ring_interval": 10,             // steps between growth rings (0: none)
 //     "cracks": true,                  // with stress bark: crack the surface as it grows (false: no cracks)
@@ -49,6 +50,21 @@ struct GrowthSpeedMap {
   float at(double u, double v) const;
 };
 
+// Painted growth directions (sec. 4.4). On the vertices: `attribute` names a VEC3 attribute of
+// the object's glTF file, in object space. Or a flow map in texture space, sampled like a speed
+// map at each vertex's texture coordinates: red is the direction's component along increasing
+// u, green along increasing v (the surface directions ∂x/∂u and ∂x/∂v, normalised). Integer
+// images (PNG) hold 0.5 + 0.5·d, as painting tools write flow maps (mid-grey: no turn); float
+// images (EXR) hold d. Either way × scale, whose length (up to 1) is how far the growth turns
+// from the normal.
+struct GrowthDirectionMap {
+  std::string attribute;  // non-empty: a vertex attribute instead of an image
+  int width = 0, height = 0;
+  std::vector<Eigen::Vector2f> values;  // per texel, (along u, along v), decoded
+  float scale = 1;
+  Eigen::Vector2d at(double u, double v) const;
+};
+
 struct GrowthDesc {
   bark::CambialGrowthSettings settings;
   std::vector<std::string> obstacle_names;
@@ -58,13 +74,11 @@ struct GrowthDesc {
   float stretch_stress = 4;
   bool texture_cells = true;  // sec. 4.6 (bark/growth/texture_cells.h); false: textures stretch with the surface
   std::shared_ptr<const GrowthSpeedMap> speed_map;
-  // Sec. 4.4's painted growth directions: a VEC3 vertex attribute of the object's glTF file
-  // (object space; its length up to 1 is how far it turns the growth from the normal), or "".
-  std::string direction_attribute;
+  std::shared_ptr<const GrowthDirectionMap> direction_map;
   Location where;  // of the growth object itself
 };
 
-// `base_dir` resolves the speed map's file name.
+// `base_dir` resolves the speed and direction maps' file names.
 GrowthDesc parse_growth(JsonObject o, const std::string& base_dir);
 
 // The size a growth reaches at its end, from the input mesh's vertex count and area and the

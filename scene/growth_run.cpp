@@ -1,8 +1,11 @@
 #include "scene/growth_run.h"
 
+#include <cmath>
+
 #include "bark/geometry/procedural_meshes.h"
 #include "bark/geometry/uv_seams.h"
 #include "bark/growth/texture_cells.h"
+#include "bark/growth/texture_transport.h"
 #include "scene/mesh_source.h"
 #include "util/errors.h"
 #include "util/progress.h"
@@ -20,6 +23,17 @@ bark::TriMesh obstacle_mesh(const ObjectDesc& o) {
   return object_trimesh(o);
 }
 
+// Whether some face of the mesh spans an area of texture space: a mesh file without
+// TEXCOORD_0 loads with every UV at (0, 0), which no painted map can be read through.
+bool has_texture_area(const bark::TriMesh& m) {
+  if (!m.has_uvs()) return false;
+  for (const auto& t : m.triangles) {
+    const Eigen::Vector2d a = bark::wrapped_uv_delta(m.uvs[t[0]], m.uvs[t[1]]), b = bark::wrapped_uv_delta(m.uvs[t[0]], m.uvs[t[2]]);
+    if (std::abs(a.x() * b.y() - a.y() * b.x()) > 1e-12) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress) {
@@ -35,7 +49,8 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
   const std::string attribute = g.speed_map ? g.speed_map->attribute : std::string();
   std::vector<AttributeRequest> requests;
   if (!attribute.empty()) requests.push_back({attribute, false});
-  if (!g.direction_attribute.empty()) requests.push_back({g.direction_attribute, true});
+  const std::string direction_attribute = g.direction_map ? g.direction_map->attribute : std::string();
+  if (!direction_attribute.empty()) requests.push_back({direction_attribute, true});
   std::vector<std::vector<float>> painted;
   const bark::TriMesh surface = object_trimesh(obj, requests, &painted);
   std::vector<float> speed;
@@ -50,22 +65,31 @@ bark::CambialGrowth start_growth(const SceneDesc& desc, size_t oi, bool progress
       speed[v] *= g.speed_map->scale;
     }
   } else if (g.speed_map) {
-    if (!surface.has_uvs())
+    if (!has_texture_area(surface))
       throw UserError(desc.file, g.where.path + "/speed_map", "a speed map needs a mesh with texture coordinates");
     for (const auto& uv : surface.uvs) speed.push_back(g.speed_map->scale * g.speed_map->at(uv.x(), uv.y()));
   }
-  // Painted directions (sec. 4.4): a VEC3 attribute, in the scene's space.
+  // Painted directions (sec. 4.4): a VEC3 attribute, in the scene's space, or a flow map read
+  // in each vertex's texture frame.
   std::vector<Eigen::Vector3f> direction;
-  if (!g.direction_attribute.empty()) {
+  if (!direction_attribute.empty()) {
     const std::vector<float>& d = painted.back();
     if (d.size() != 3 * surface.positions.size()) throw std::logic_error("start_growth: directions and vertices differ");
     for (size_t v = 0; v < surface.positions.size(); ++v) {
       const Eigen::Vector3f D(d[3 * v], d[3 * v + 1], d[3 * v + 2]);
       if (!(D.norm() <= 1e6f))
         throw UserError(desc.file, g.where.path + "/direction_map/attribute",
-                        obj.file + ": vertex " + std::to_string(v) + " has a " + g.direction_attribute +
+                        obj.file + ": vertex " + std::to_string(v) + " has a " + direction_attribute +
                             " longer than 1e6 (its length, up to 1, is how far the growth turns)");
       direction.push_back(D);
+    }
+  } else if (g.direction_map) {
+    if (!has_texture_area(surface))
+      throw UserError(desc.file, g.where.path + "/direction_map", "a direction map needs a mesh with texture coordinates");
+    const std::vector<bark::TextureAxes> axes = bark::texture_axes(surface.positions, surface.uvs, surface.triangles);
+    for (size_t v = 0; v < surface.positions.size(); ++v) {
+      const Eigen::Vector2d d = double(g.direction_map->scale) * g.direction_map->at(surface.uvs[v].x(), surface.uvs[v].y());
+      direction.push_back(bark::texture_direction(axes[v], d).cast<float>());
     }
   }
   const std::string name = obj.name.empty() ? "mesh" + std::to_string(oi) : obj.name;

@@ -443,9 +443,9 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
       if (d.procedural && d.growth->speed_map && !d.growth->speed_map->attribute.empty())
         throw UserError(c.file, d.growth->where.path + "/speed_map/attribute",
                         "a vertex attribute comes from a mesh file; a procedural mesh has none (paint an image \"file\")");
-      if (d.procedural && !d.growth->direction_attribute.empty())
+      if (d.procedural && d.growth->direction_map && !d.growth->direction_map->attribute.empty())
         throw UserError(c.file, d.growth->where.path + "/direction_map/attribute",
-                        "a vertex attribute comes from a mesh file; a procedural mesh has none (use strokes with a \"direction\")");
+                        "a vertex attribute comes from a mesh file; a procedural mesh has none (paint an image \"file\", or use strokes with a \"direction\")");
     }
   } else if (type == "tree") {
     d.type = ObjectType::Tree;
@@ -460,9 +460,9 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
       if (d.growth->speed_map && !d.growth->speed_map->attribute.empty())
         throw UserError(c.file, d.growth->where.path + "/speed_map/attribute",
                         "a vertex attribute comes from a mesh file; a tree has none (paint an image \"file\")");
-      if (!d.growth->direction_attribute.empty())
+      if (d.growth->direction_map && !d.growth->direction_map->attribute.empty())
         throw UserError(c.file, d.growth->where.path + "/direction_map/attribute",
-                        "a vertex attribute comes from a mesh file; a tree has none (use strokes with a \"direction\")");
+                        "a vertex attribute comes from a mesh file; a tree has none (paint an image \"file\", or use strokes with a \"direction\")");
     }
   } else {
     o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, mesh, tree");

@@ -139,6 +139,8 @@ bool CambialGrowth::step() {
   const std::vector<std::array<uint32_t, 3>> step_faces = interface_faces(complex_, *adjacency_);
   const InterfaceStepStats st =
       advance_interface(complex_, *adjacency_, step_faces, settings_.function, age_at(step_), age_at(step_ + 1));
+  const auto t_contact = Clock::now();
+  stats_.motion_s += std::chrono::duration<double>(t_contact - t0).count();
   stats_.moved += st.moved;
   stats_.shortened += st.shortened;
   stats_.clamped += st.clamped;
@@ -162,11 +164,14 @@ bool CambialGrowth::step() {
       freeze_contacts(complex_, faces, obstacle_faces_, std::max(0.5 * step_thickening, 0.02 * settings_.edge_min));
   stats_.frozen_obstacle += contact.obstacle;
   stats_.frozen_contact += contact.front;
+  const auto t_repair = Clock::now();
+  stats_.contact_s += std::chrono::duration<double>(t_repair - t_contact).count();
   // Curvature and contact moved and froze points only: the faces, in tet order, still hold.
   const RepairStats repair = growth_repair_step(complex_, *adjacency_, step_faces, settings_.edge_min, settings_.edge_max);
   stats_.splits += repair.splits;
   stats_.collapses += repair.collapses;
   stats_.flips += repair.flips23 + repair.flips32;
+  stats_.repair_s += since(t_repair);
   // Most moves blocked: the volume around the interface has worn out; TetGen makes it anew
   // (the interface and its points unchanged).
   const long tried = st.moved + st.shortened + st.clamped;

@@ -51,6 +51,9 @@ struct CambialGrowthStats {
   long remeshes = 0;                // re-tetrahedralizations (volume_remesh.h)
   long remesh_refused = 0;          // ... TetGen refused (the interface touching itself)
   double remesh_s = 0;              // their time (part of steps_s)
+  // Where steps_s goes: the interface motion (advance_interface), the curvature term and
+  // contact, the local repair; with remesh_s, these add up to steps_s but for book-keeping.
+  double motion_s = 0, contact_s = 0, repair_s = 0;
 };
 
 // The interface as a compact triangle mesh (outwards), with its UVs when the input had them,

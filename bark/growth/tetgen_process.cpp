@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 namespace phellem::bark {
@@ -60,7 +61,16 @@ bool write_all(int fd, const void* data, size_t n) {
 TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in) {
   int fds[2];
   if (::pipe(fds) != 0) throw TetgenFailure(std::string("cannot open a pipe to TetGen: ") + std::strerror(errno));
+  // The forking thread holds the standard streams' locks across fork: a stream another thread
+  // was writing cannot reach the child locked (or half-updated) for ever. TetGen prints to
+  // them on its error paths, even when quiet.
+  std::fflush(stdout);
+  std::fflush(stderr);
+  ::flockfile(stdout);
+  ::flockfile(stderr);
   const pid_t pid = ::fork();
+  ::funlockfile(stderr);
+  ::funlockfile(stdout);
   if (pid < 0) {
     ::close(fds[0]);
     ::close(fds[1]);

@@ -26,6 +26,21 @@ std::vector<TextureGradient> texture_gradients(const std::vector<Eigen::Vector3d
                                                const std::vector<Eigen::Vector2d>& uv,
                                                const std::vector<std::array<uint32_t, 3>>& faces);
 
+// Per point, the unit surface directions in which u and v grow (the columns of ∂x/∂u, each
+// face's E T⁻¹, normalised, area-weighted over the point's faces, normalised again; zero
+// where no face gives one). The frame a direction painted in texture space (a flow map) is
+// read in.
+struct TextureAxes {
+  Eigen::Vector3d u = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
+};
+std::vector<TextureAxes> texture_axes(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector2d>& uv,
+                                      const std::vector<std::array<uint32_t, 3>>& faces);
+
+// A direction painted in texture space, d = (along u, along v), as a vector on the surface:
+// d.x·axes.u + d.y·axes.v, of d's length (a skewed map turns it, never lengthens it); zero
+// where the axes are.
+Eigen::Vector3d texture_direction(const TextureAxes& axes, const Eigen::Vector2d& d);
+
 // Gram–Schmidt against the unit normal n: the tangential part of the move Δx, through the
 // gradient, is the UV's move: uv + G (Δx − (Δx·n) n).
 Eigen::Vector2d transported_uv(const Eigen::Vector2d& uv, const TextureGradient& g, const Eigen::Vector3d& move,

@@ -107,6 +107,16 @@ TEST(CambialGrowthCli, SimulateWritesTheGrownSurfaceRingsAndStatsTheSameAtAnyThr
     // The surface grew (0.03 × (1 − e^−1) = 19 mm on a 0.1 m radius): its edges were split.
     EXPECT_GT(stats["growth"]["vertices_end"].get<long>(), stats["growth"]["vertices_start"].get<long>());
     EXPECT_GT(stats["time_s"]["growth"].get<double>(), 0.0);
+    // Where the steps' time went: each part spent some, together not more than the whole.
+    double parts = 0;
+    for (const char* part : {"growth_motion", "growth_contact", "growth_repair", "growth_remesh"}) {
+      ASSERT_TRUE(stats["time_s"].contains(part)) << part;
+      if (std::string(part) != "growth_remesh") {
+        EXPECT_GT(stats["time_s"][part].get<double>(), 0.0) << part;
+      }
+      parts += stats["time_s"][part].get<double>();
+    }
+    EXPECT_LE(parts, stats["time_s"]["growth"].get<double>());
     const nlohmann::json summary = read_json(out + "/trunk.json");
     EXPECT_EQ(summary["rings"], 3);  // steps 0, 4 and 8
     glb[threads - 1] = test::read_text(out + "/trunk.glb");

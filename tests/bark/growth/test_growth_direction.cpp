@@ -71,6 +71,36 @@ TEST(TextureTransport, ATangentialMoveMovesTheUvByTheTextureJacobianAndANormalOn
   for (const auto& gi : texture_gradients(p, seam, faces)) EXPECT_TRUE(gi.isApprox(expected, 1e-12)) << gi;
 }
 
+TEST(TextureTransport, ADirectionPaintedInTextureSpaceLiesAlongTheSurfaceDirectionsOfUAndVWithItsLength) {
+  // A plane z = 0 with uv = (x / 4, y / 3): u grows along +x, v along +y.
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  const std::vector<Eigen::Vector2d> uv = {{0, 0}, {0.25, 0}, {0, 1.0 / 3}, {0.25, 1.0 / 3}};
+  const std::vector<std::array<uint32_t, 3>> faces = {{0, 1, 3}, {0, 3, 2}};
+  for (const TextureAxes& a : texture_axes(p, uv, faces)) {
+    EXPECT_TRUE(a.u.isApprox(Eigen::Vector3d(1, 0, 0), 1e-12)) << a.u.transpose();
+    EXPECT_TRUE(a.v.isApprox(Eigen::Vector3d(0, 1, 0), 1e-12)) << a.v.transpose();
+    // Along u by 0.6 and against v by 0.3: that direction, length √0.45.
+    EXPECT_TRUE(texture_direction(a, {0.6, -0.3}).isApprox(Eigen::Vector3d(0.6, -0.3, 0), 1e-12));
+  }
+  // Mirrored (u = 1 − x / 4), across a wrapped seam, and rotated a quarter in the plane (u
+  // along +y, v along −x): the axes follow the parametrization, not the vertex order.
+  const std::vector<Eigen::Vector2d> mirrored = {{0.05, 0}, {0.8, 0}, {0.05, 1.0 / 3}, {0.8, 1.0 / 3}};
+  for (const TextureAxes& a : texture_axes(p, mirrored, faces)) EXPECT_TRUE(a.u.isApprox(Eigen::Vector3d(-1, 0, 0), 1e-12));
+  const std::vector<Eigen::Vector2d> turned = {{0, 0}, {0, -0.25}, {1.0 / 3, 0}, {1.0 / 3, -0.25}};
+  for (const TextureAxes& a : texture_axes(p, turned, faces)) {
+    EXPECT_TRUE(a.u.isApprox(Eigen::Vector3d(0, 1, 0), 1e-12)) << a.u.transpose();
+    EXPECT_TRUE(a.v.isApprox(Eigen::Vector3d(-1, 0, 0), 1e-12)) << a.v.transpose();
+  }
+  // A skewed map (v along the diagonal) turns a painted direction but keeps its length; a
+  // point on no face, or a face with no texture area, has no axes and turns nothing.
+  const std::vector<Eigen::Vector2d> skewed = {{0, 0}, {0.25, -0.25}, {0, 0.25}, {0.25, 0}};
+  const auto s = texture_axes(p, skewed, faces);
+  EXPECT_NEAR(texture_direction(s[0], {0.3, 0.4}).norm(), 0.5, 1e-12);
+  const std::vector<Eigen::Vector2d> flat = {{0, 0}, {0, 0}, {0, 0}, {0, 0}};
+  const auto none = texture_axes({p[0], p[1], p[2], p[3], {5, 5, 5}}, {flat[0], flat[1], flat[2], flat[3], {0, 0}}, faces);
+  for (const TextureAxes& a : none) EXPECT_EQ(texture_direction(a, {1, 0}), Eigen::Vector3d::Zero());
+}
+
 // The icosphere's parametrization (procedural_meshes.h) at a direction: longitude, colatitude.
 Eigen::Vector2d lat_long(const Eigen::Vector3d& p) {
   const Eigen::Vector3d v = p.normalized();
