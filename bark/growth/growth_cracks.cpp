@@ -191,6 +191,15 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
   if (started_) {
     for (FaceId f : cg.faces()) cracker->mesh().face(f).sigma = carried[f.idx()];
     cracker->set_absolute_threshold(tau_);
+    // The residuals and virtual displacement by vertex identity, as the stress.
+    std::vector<Eigen::Matrix3d> residual(point_of.size(), Eigen::Matrix3d::Zero());
+    std::vector<Eigen::Vector3d> displacement(point_of.size(), Eigen::Vector3d::Zero());
+    for (size_t v = 0; v < point_of.size(); ++v)
+      if (point_of[v] < residual_.size()) {
+        residual[v] = residual_[point_of[v]];
+        displacement[v] = displacement_[point_of[v]];
+      }
+    cracker->carry_over(std::move(residual), std::move(displacement));
   } else {
     tau_ = cracker->absolute_threshold();
     started_ = true;
@@ -239,6 +248,13 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
     graph_edges.emplace_back(u, v);
     if (point_of[u] != kNone && point_of[v] != kNone) edges_.insert(edge_key(point_of[u], point_of[v]));
   }
+  residual_.assign(c.points.size(), Eigen::Matrix3d::Zero());
+  displacement_.assign(c.points.size(), Eigen::Vector3d::Zero());
+  for (size_t v = 0; v < point_of.size(); ++v)
+    if (point_of[v] != kNone) {
+      if (v < cracker->residual().size()) residual_[point_of[v]] = cracker->residual()[v];
+      if (v < cracker->displacement().size()) displacement_[point_of[v]] = cracker->displacement()[v];
+    }
   c.on_crack.assign(c.points.size(), 0);
   for (const auto& [a, b] : edges_) c.on_crack[a] = c.on_crack[b] = 1;
   const std::vector<int32_t> alg1 = crack_widths(CrackGraph::from_edges(cg.number_of_vertices(), graph_edges));

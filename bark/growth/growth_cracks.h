@@ -81,7 +81,15 @@ class GrowthCracks {
   using FaceStress = std::unordered_map<std::array<uint32_t, 3>, FaceStressRecord, KeyHash>;
   const FaceStress& face_stress() const { return faces_; }
   const CrackCouplingStats& stats() const { return stats_; }
+  // The settings from the next step on (e.g. a schedule of iterations).
+  void set_settings(const CrackCouplingSettings& s) { settings_ = s; }
   double absolute_threshold() const { return tau_; }
+  // Per point, as the last step left them: the eq. 6 residual a crack tip carries into the next
+  // iteration, and the summed virtual displacement (zero for points the cracking never saw).
+  // Carried by vertex identity like the stress, so a tip that had not yet cracked keeps its
+  // surplus across a growth step and the displacement keeps summing.
+  const std::vector<Eigen::Matrix3d>& residual() const { return residual_; }
+  const std::vector<Eigen::Vector3d>& displacement() const { return displacement_; }
 
  private:
   void follow_splits(const TetComplex& c, const std::set<std::pair<uint32_t, uint32_t>>& interface_edges,
@@ -93,6 +101,8 @@ class GrowthCracks {
   bool started_ = false;
   std::set<std::pair<uint32_t, uint32_t>> edges_;
   std::vector<float> width_;                // per point
+  std::vector<Eigen::Matrix3d> residual_;   // per point
+  std::vector<Eigen::Vector3d> displacement_;  // per point
   std::vector<Eigen::Vector3d> positions_;  // the points as the last step left them
   size_t points_seen_ = 0;                  // points the last step knew
   FaceStress faces_;

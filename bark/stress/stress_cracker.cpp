@@ -167,6 +167,14 @@ void StressCracker::crack_step() {
     if (cracked[k] == 2) residual_[k].setZero();
 }
 
+void StressCracker::carry_over(std::vector<Eigen::Matrix3d> residual, std::vector<Eigen::Vector3d> displacement) {
+  const size_t nv = mesh_.mesh().number_of_vertices();
+  if (residual.size() != nv || displacement.size() != nv)
+    throw std::invalid_argument("StressCracker::carry_over: one residual and one displacement per vertex");
+  residual_ = std::move(residual);
+  displacement_ = std::move(displacement);
+}
+
 void StressCracker::iterate() {
   apply_growth_hooks();
   crack_step();

@@ -60,6 +60,14 @@ class StressCracker {
   // Separation tensors of the last force computation, per vertex (eq. 4, plus residuals).
   const std::vector<Eigen::Matrix3d>& separation() const { return separation_; }
 
+  // Per vertex: the residual of eq. 6 a tip that did not crack takes into the next iteration,
+  // and the summed virtual displacement of the relaxations (sec. 3.1.4).
+  const std::vector<Eigen::Matrix3d>& residual() const { return residual_; }
+  const std::vector<Eigen::Vector3d>& displacement() const { return displacement_; }
+  // Both as an earlier cracker left them, one per vertex of this mesh: crack coupling
+  // (bark/growth/growth_cracks.h) runs a new cracker on each grown surface and carries them.
+  void carry_over(std::vector<Eigen::Matrix3d> residual, std::vector<Eigen::Vector3d> displacement);
+
   // Post-processing (sec. 3.1.6, 4.2): components, Algorithm 1 widths, virtual displacement.
   // `source` (if given) receives each output vertex's mesh vertex.
   CrackedMesh result(std::vector<VertexId>* source_out = nullptr) const;

@@ -80,6 +80,36 @@ TEST(GrowthCracks, TransferKeepsTheStressExactlyOnAnUnchangedMesh) {
   }
 }
 
+TEST(GrowthCracks, ResidualsAndVirtualDisplacementAreCarriedByPointAcrossSteps) {
+  // Eq. 6's residuals (a tip's surplus over τ, kept until it cracks) and the virtual
+  // displacement summed by the relaxations belong to the surface, not to one step's cracker:
+  // a transfer-only step on an unchanged mesh hands them on bit for bit.
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+  TetAdjacency adj(c);
+  StressParams p = bark_params(StressPattern::Horizontal);
+  p.relaxations_per_iteration = 2;
+  GrowthCracks cracks(p, {3, 4.0});
+  cracks.step(c, adj, "s.json", "/objects/0/growth/cracks");
+  ASSERT_FALSE(cracks.crack_edges().empty());
+  const std::vector<Eigen::Matrix3d> residual = cracks.residual();
+  const std::vector<Eigen::Vector3d> displacement = cracks.displacement();
+  ASSERT_EQ(residual.size(), c.points.size());
+  long with_residual = 0, displaced = 0;
+  for (size_t q = 0; q < residual.size(); ++q) {
+    with_residual += residual[q].norm() > 0;
+    displaced += displacement[q].norm() > 0;
+  }
+  EXPECT_GT(with_residual, 0);  // tips that took a surplus and have not cracked yet
+  EXPECT_GT(displaced, 100);
+  cracks.set_settings({0, 4.0});  // transfer only
+  cracks.step(c, adj, "s.json", "/objects/0/growth/cracks");
+  ASSERT_EQ(cracks.residual().size(), residual.size());
+  for (size_t q = 0; q < residual.size(); ++q) {
+    EXPECT_EQ(cracks.residual()[q], residual[q]) << "point " << q;
+    EXPECT_EQ(cracks.displacement()[q], displacement[q]) << "point " << q;
+  }
+}
+
 TEST(GrowthCracks, StretchAddsTheGreenStrain) {
   // Every point scaled by (1 + e) about the centre: each face's Green strain is
   // ((1 + e)² − 1) / 2 in every in-plane direction, and its frame does not turn.
