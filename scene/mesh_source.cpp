@@ -79,6 +79,17 @@ DicingParams tree_mesh_dicing(const ObjectDesc& o) {
 
 bark::TriMesh object_trimesh(const ObjectDesc& o) { return object_trimesh(o, {}, nullptr); }
 
+namespace {
+
+// The mesh moved into the scene by the object's transform.
+bark::TriMesh transformed(bark::TriMesh t, const ObjectDesc& o) {
+  const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
+  for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
+  return t;
+}
+
+}  // namespace
+
 bark::TriMesh model_trimesh(const LoadedModel& model, const ObjectDesc& o) {
   bark::TriMesh t;
   for (const MeshData& m : model.meshes) {
@@ -89,9 +100,7 @@ bark::TriMesh model_trimesh(const LoadedModel& model, const ObjectDesc& o) {
     for (size_t k = 0; k + 2 < m.indices.size(); k += 3)
       t.triangles.push_back({base + m.indices[k], base + m.indices[k + 1], base + m.indices[k + 2]});
   }
-  const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
-  for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
-  return t;
+  return transformed(std::move(t), o);
 }
 
 bark::TriMesh object_trimesh(const ObjectDesc& o, const std::vector<AttributeRequest>& attributes,
@@ -136,10 +145,7 @@ bark::TriMesh object_trimesh(const ObjectDesc& o, const std::vector<AttributeReq
     return std::move(joined.mesh);  // trees carry no transform
   }
   if (o.procedural) {
-    t = procedural_trimesh(*o.procedural);
-    const Eigen::Matrix4d T = o.transform.matrix.cast<double>();
-    for (auto& p : t.positions) p = (T * p.homogeneous()).hnormalized();
-    return t;
+    return transformed(procedural_trimesh(*o.procedural), o);
   }
   LoadedModel model = load_mesh_file(o.file, attributes);
   t = model_trimesh(model, o);

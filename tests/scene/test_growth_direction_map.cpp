@@ -14,6 +14,7 @@
 #include "scene/growth_run.h"
 #include "scene/mesh_source.h"
 #include "scene/scene_parser.h"
+#include "tests/support/scene_errors.h"
 #include "tests/support/test_util.h"
 #include "util/errors.h"
 
@@ -209,14 +210,7 @@ TEST(GrowthDirectionMap, AMissingOrScalarAttributeAndMeshesWithoutAFileAreRefuse
     EXPECT_NE(std::string(e.what()).find("meshes[0].primitives[0].attributes._SCALAR"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("expected 3"), std::string::npos) << e.what();
   }
-  const auto refused_at = [&](const std::string& json) {
-    try {
-      parse_scene(json, dir + "/s.json", dir);
-    } catch (const UserError& e) {
-      return e.where();
-    }
-    return std::string("(accepted)");
-  };
+  const auto refused_at = [&](const std::string& json) { return test::where_refused(json, dir + "/s.json", dir); };
   EXPECT_EQ(refused_at(scene(scalar, R"(, "direction_map": {"attribute": ""})")), "/objects/0/growth/direction_map/attribute");
   EXPECT_EQ(refused_at(R"({"objects": [{"type": "mesh", "procedural": {"shape": "log"},
       "growth": {"direction_map": {"attribute": "_GROWTH_DIRECTION"}}}]})"),

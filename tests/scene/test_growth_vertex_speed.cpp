@@ -10,6 +10,7 @@
 #include "scene/growth_run.h"
 #include "scene/mesh_source.h"
 #include "scene/scene_parser.h"
+#include "tests/support/scene_errors.h"
 #include "tests/support/test_util.h"
 #include "util/errors.h"
 
@@ -84,14 +85,7 @@ TEST(GrowthVertexSpeed, AMissingAttributeOrABadValueIsRefusedWithWhereItIs) {
     EXPECT_NE(e.detail().find("a speed factor must lie in [0, 1e6]"), std::string::npos) << e.what();
   }
   // The keys: both a file and an attribute; an attribute on a procedural mesh.
-  const auto refused_at = [&](const std::string& json) {
-    try {
-      parse_scene(json, dir + "/s.json", dir);
-    } catch (const UserError& e) {
-      return e.where();
-    }
-    return std::string("(accepted)");
-  };
+  const auto refused_at = [&](const std::string& json) { return test::where_refused(json, dir + "/s.json", dir); };
   EXPECT_EQ(refused_at(scene(plain, R"({"attribute": "_A", "file": "paint.png"})")), "/objects/0/growth/speed_map/attribute");
   EXPECT_EQ(refused_at(scene(plain, R"({"attribute": ""})")), "/objects/0/growth/speed_map/attribute");
   EXPECT_EQ(refused_at(R"({"objects": [{"type": "mesh", "procedural": {"shape": "log"},

@@ -1,4 +1,5 @@
-// The message of the UserError a scene's JSON text raises, or "<no error>".
+// The message of the UserError a scene's JSON text raises, or "<no error>"; or where it
+// points, for a scene read as if from `file` in `dir`, or "(accepted)".
 #pragma once
 
 #include <string>
@@ -15,6 +16,15 @@ inline std::string error_of(const std::string& json) {
     return e.what();
   }
   return "<no error>";
+}
+
+inline std::string where_refused(const std::string& json, const std::string& file, const std::string& dir) {
+  try {
+    parse_scene(json, file, dir);
+  } catch (const UserError& e) {
+    return e.where();
+  }
+  return "(accepted)";
 }
 
 }  // namespace phellem::test
