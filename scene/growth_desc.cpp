@@ -168,6 +168,8 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
     if (auto w = t.get("max_volume")) s.tet.max_volume = w->non_negative();
     if (auto w = t.get("padding")) s.tet.padding = in_range(*w, 0.05f, 10, "padding must lie in [0.05, 10] (the room around the mesh, in its largest extents)");
     if (auto w = t.get("lattice")) s.tet.lattice = in_range(*w, 0, 10, "lattice must lie in [0, 10] (where TetGen's graded starting points begin, in paddings; 0: none)");
+    if (auto w = t.get("time_limit"))
+      s.tet.time_limit = in_range(*w, 1, 86400, "time_limit must lie in [1, 86400] (seconds TetGen may take for one tetrahedralization)");
     if (auto w = t.get("remesh_blocked"))
       s.remesh_blocked = in_range(*w, 0, 1, "remesh_blocked must lie in [0, 1] (the share of blocked moves that has the volume made again; 0: never)");
     t.finish();

@@ -137,6 +137,7 @@ bool CambialGrowth::step() {
   // The interface faces once (the motion moves points and retessellates the outside only, not
   // the faces), in tet order: for the motion, the curvature term, contact and the repair.
   const std::vector<std::array<uint32_t, 3>> step_faces = interface_faces(complex_, *adjacency_);
+  const std::vector<Eigen::Vector3d> before = complex_.points;  // how far each point moves: for the flips
   const InterfaceStepStats st =
       advance_interface(complex_, *adjacency_, step_faces, settings_.function, age_at(step_), age_at(step_ + 1));
   const auto t_contact = Clock::now();
@@ -167,9 +168,18 @@ bool CambialGrowth::step() {
   const auto t_repair = Clock::now();
   stats_.contact_s += std::chrono::duration<double>(t_repair - t_contact).count();
   // Curvature and contact moved and froze points only: the faces, in tet order, still hold.
-  const RepairStats repair = growth_repair_step(complex_, *adjacency_, step_faces, settings_.edge_min, settings_.edge_max);
+  // Interface flips may move the surface against the growth (inwards growing, outwards
+  // shrinking) by half of what the flipped faces' corners moved this step: rings nest.
+  std::vector<double> moved(before.size());
+  for (size_t v = 0; v < before.size(); ++v) moved[v] = (complex_.points[v] - before[v]).norm();
+  RepairSettings repair_settings;
+  (settings_.reverse ? repair_settings.flips.max_outward : repair_settings.flips.max_inward) = 0;
+  repair_settings.flips.moved = &moved;
+  const RepairStats repair =
+      growth_repair_step(complex_, *adjacency_, step_faces, settings_.edge_min, settings_.edge_max, repair_settings);
   stats_.splits += repair.splits;
   stats_.collapses += repair.collapses;
+  stats_.interface_flips += repair.interface_flips;
   stats_.flips += repair.flips23 + repair.flips32;
   stats_.repair_s += since(t_repair);
   // Most moves blocked: the volume around the interface has worn out; TetGen makes it anew
@@ -182,7 +192,11 @@ bool CambialGrowth::step() {
       double(st.shortened + st.clamped) > settings_.remesh_blocked * double(tried)) {
     grown_since_remesh_ = 0;
     const auto tr = Clock::now();
-    if (retetrahedralize(complex_, obstacles_, settings_.tet, file_, where_)) {
+    // A re-tetrahedralization takes about as long as the set-up did; one that takes ten times
+    // as long (at least 10 s) has met an input TetGen loops on, and is skipped like a refusal.
+    TetSettings tet = settings_.tet;
+    tet.time_limit = std::min(tet.time_limit, std::max(10.0, 10 * stats_.setup_s));
+    if (retetrahedralize(complex_, obstacles_, tet, file_, where_)) {
       adjacency_.emplace(complex_);
       obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);
       ++stats_.remeshes;

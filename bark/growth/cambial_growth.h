@@ -4,7 +4,8 @@
 // function's thickening over the step (Eq. 1–3, interface_motion.h), freezes the vertices
 // that reached an obstacle or another front (sec. 4.5, growth_contact.h), then repairs the
 // volume in the manner of deformable simplicial complexes (complex_repair.h: splits and
-// collapses keep interface edges inside their length band, flips the outside well shaped). Every
+// collapses keep interface edges inside their length band, interface edge flips its triangles
+// and other flips the outside well shaped). Every
 // `ring_interval` steps the interface is recorded as a growth ring. Reversed growth (sec. 4.3)
 // runs the ages backwards: the surface shrinks by the thickening it would have grown.
 //
@@ -44,7 +45,7 @@ struct CambialGrowthSettings {
 struct CambialGrowthStats {
   size_t vertices_start = 0, vertices_end = 0;  // interface vertices
   size_t tets_start = 0, tets_end = 0;
-  long moved = 0, shortened = 0, clamped = 0, splits = 0, collapses = 0, flips = 0;
+  long moved = 0, shortened = 0, clamped = 0, splits = 0, collapses = 0, flips = 0, interface_flips = 0;
   long frozen_obstacle = 0, frozen_contact = 0;  // interface vertices stopped by an obstacle, by another front
   double setup_s = 0, steps_s = 0;  // TetGen; all steps (without the crack coupling)
   double cracks_s = 0;              // the crack coupling, all steps

@@ -2,6 +2,7 @@
 
 #include "bark/growth/free_vertex_removal.h"
 #include "bark/growth/interface_coarsening.h"
+#include "bark/growth/interface_flips.h"
 #include "bark/growth/interface_refinement.h"
 #include "bark/growth/tet_flips.h"
 
@@ -20,6 +21,10 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_leng
 RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
                                double min_length, double max_length, const RepairSettings& settings) {
   RepairStats st;
+  // The flips first, on the faces as the motion left them: an edge a flip removed is no longer
+  // found by the splits and collapses below (they check each edge against the tetrahedra), and
+  // the flip's new edge is inside the band's upper bound.
+  if (settings.interface_flips) st.interface_flips = flip_interface_edges(c, adj, faces, max_length, settings.flips);
   std::vector<std::array<uint32_t, 2>> edges;  // the interface's edges after the splits
   st.splits = split_long_interface_edges(c, adj, faces, max_length, edges);
   st.collapses = collapse_short_interface_edges(c, adj, edges, min_length, max_length);

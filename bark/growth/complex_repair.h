@@ -1,5 +1,7 @@
 // The repair of the deformable simplicial complex after each motion of the interface
 // (Kratt et al., Woodification, sec. 3; Misztal and Bærentzen): in this order
+//  0. interface edges opposite an obtuse angle, between nearly coplanar faces, are flipped
+//     (interface_flips.h),
 //  1. interface edges longer than the band's upper bound are split (interface_refinement.h),
 //  2. interface edges shorter than its lower bound are collapsed (interface_coarsening.h),
 //  3. the free vertices next to the interface with a poor tetrahedron are removed where that
@@ -16,6 +18,7 @@
 // interface a closed oriented 2-manifold. Deterministic, whatever the thread count.
 #pragma once
 
+#include "bark/growth/interface_flips.h"
 #include "bark/growth/tet_adjacency.h"
 
 namespace phellem::bark {
@@ -23,6 +26,7 @@ namespace phellem::bark {
 struct RepairStats {
   long splits = 0;
   long collapses = 0;
+  long interface_flips = 0;  // interface edges flipped (interface_flips.h)
   long flips23 = 0;
   long flips32 = 0;      // 3-2 flips and edge removals (4-4, 5-6, 6-8)
   long relocated = 0;
@@ -39,6 +43,10 @@ struct RepairSettings {
   // × max_length: longer free edges of poor tetrahedra are split (0: none; splitting the
   // needles of a coarse outside made the lag worse in the sphere test, so it is off).
   double free_split_length = 0;
+  // Interface edge flips (interface_flips.h), with their settings (CambialGrowth sets how far
+  // a flip may move the surface against the growth).
+  bool interface_flips = true;
+  InterfaceFlipSettings flips;
 };
 
 // Band: min_length < max_length / 2 keeps a split edge's halves above the lower bound.

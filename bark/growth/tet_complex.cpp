@@ -280,11 +280,14 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
     std::snprintf(switches, sizeof switches, "pYAQq%.6g", s.quality);
   TetgenMesh out;
   try {
-    out = tetrahedralize_in_child(switches, in);
+    out = tetrahedralize_in_child(switches, in, s.time_limit);
   } catch (const TetgenFailure& e) {
+    const bool late = std::string(e.what()).starts_with("TetGen did not finish");
     throw UserError(file, where,
                     "TetGen cannot tetrahedralize the surface" + std::string(obstacles.empty() ? "" : " and its obstacles") +
-                        " (" + e.what() + "; a self-intersecting or degenerate surface?)");
+                        " (" + e.what() +
+                        (late ? "; \"tetrahedra\": {\"time_limit\"} raises the limit, or the surface may be degenerate)"
+                              : "; a self-intersecting or degenerate surface?)"));
   }
 
   TetComplex c;

@@ -32,6 +32,9 @@ struct TetSettings {
   // Steiner points TetGen starts from (outside_lattice.h): graded lattices from `lattice` ×
   // the padding away from the surface, which make its set-up near linear (0: none).
   double lattice = 0.2;
+  // Seconds TetGen may take for one tetrahedralization (the set-up, or a re-tetrahedralization
+  // while growing): past it the set-up is refused and a re-tetrahedralization skipped.
+  double time_limit = 120;
 };
 
 struct TetComplex {

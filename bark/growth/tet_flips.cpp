@@ -34,6 +34,46 @@ double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, cons
   return quality_seen(c, t, probe);
 }
 
+bool edge_ring(const TetComplex& c, const std::vector<uint32_t>& around_ab, uint32_t a, uint32_t b,
+               std::vector<uint32_t>& ring, std::vector<uint32_t>& ring_tet) {
+  thread_local std::vector<std::array<uint32_t, 2>> links;
+  thread_local std::vector<uint8_t> used;
+  thread_local std::vector<uint32_t> distinct;
+  const size_t n = around_ab.size();
+  if (n == 0) return false;
+  // Each tetrahedron a–b–x–y links x to y; they must close.
+  links.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    int k = 0;
+    for (uint32_t w : c.tets[around_ab[i]])
+      if (w != a && w != b) links[i][size_t(k++)] = w;
+    if (k != 2) return false;
+  }
+  ring.assign({links[0][0], links[0][1]});
+  ring_tet.assign({around_ab[0]});  // ring_tet[i] holds ring[i]–ring[i+1]
+  used.assign(n, 0);
+  used[0] = 1;
+  while (ring.size() <= n) {
+    bool found = false;
+    for (size_t i = 0; i < n && !found; ++i) {
+      if (used[i]) continue;
+      const uint32_t last = ring.back();
+      if (links[i][0] == last || links[i][1] == last) {
+        ring.push_back(links[i][0] == last ? links[i][1] : links[i][0]);
+        ring_tet.push_back(around_ab[i]);
+        used[i] = 1;
+        found = true;
+      }
+    }
+    if (!found) break;
+  }
+  if (ring.size() != n + 1 || ring.back() != ring.front()) return false;
+  ring.pop_back();
+  distinct = ring;
+  std::sort(distinct.begin(), distinct.end());
+  return std::adjacent_find(distinct.begin(), distinct.end()) == distinct.end();
+}
+
 bool flip_23(TetComplex& c, TetAdjacency& adj, uint32_t t, int f, const Probe& probe, FlipStats& stats) {
   const uint8_t label = c.label[t];
   if (label == TetComplex::kObstacle) return false;
@@ -79,9 +119,7 @@ bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Pro
 bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
                  int max_ring) {
   // Scratch buffers kept per thread: a step tries this hundreds of thousands of times.
-  thread_local std::vector<uint32_t> around_ab, ring, ring_tet, distinct, slots;
-  thread_local std::vector<std::array<uint32_t, 2>> links;
-  thread_local std::vector<uint8_t> used;
+  thread_local std::vector<uint32_t> around_ab, ring, ring_tet, slots;
   thread_local std::vector<std::array<uint32_t, 4>> best_made, made;
   adj.edge_tets(c, a, b, around_ab);
   const size_t n = around_ab.size();
@@ -90,39 +128,7 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
   if (label == TetComplex::kObstacle) return false;
   for (uint32_t t : around_ab)
     if (c.label[t] != label) return false;
-  // The ring of the edge, in order: each tetrahedron a–b–x–y links x to y; they must close.
-  links.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    int k = 0;
-    for (uint32_t w : c.tets[around_ab[i]])
-      if (w != a && w != b) links[i][size_t(k++)] = w;
-    if (k != 2) return false;
-  }
-  ring.assign({links[0][0], links[0][1]});
-  ring_tet.assign({around_ab[0]});  // ring_tet[i] holds ring[i]–ring[i+1]
-  used.assign(n, 0);
-  used[0] = 1;
-  while (ring.size() <= n) {
-    bool found = false;
-    for (size_t i = 0; i < n && !found; ++i) {
-      if (used[i]) continue;
-      const uint32_t last = ring.back();
-      if (links[i][0] == last || links[i][1] == last) {
-        ring.push_back(links[i][0] == last ? links[i][1] : links[i][0]);
-        ring_tet.push_back(around_ab[i]);
-        used[i] = 1;
-        found = true;
-      }
-    }
-    if (!found) break;
-  }
-  if (ring.size() != n + 1 || ring.back() != ring.front()) return false;
-  ring.pop_back();
-  {
-    distinct = ring;
-    std::sort(distinct.begin(), distinct.end());
-    if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) return false;
-  }
+  if (!edge_ring(c, around_ab, a, b, ring, ring_tet)) return false;
   double before = 1e300;
   for (uint32_t t : around_ab) before = std::min(before, quality_seen(c, c.tets[t], probe));
   // Each fan of the ring from one of its vertices r0: for every ring edge rj–rj+1 not at r0,

@@ -46,6 +46,12 @@ struct FlipStats {
 
 double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, const Probe& probe);
 
+// The ring of edge a–b from the tetrahedra around it (adj.edge_tets): its vertices in order
+// round the edge, tetrahedron ring_tet[i] joining ring[i] to ring[i + 1] (cyclically). False
+// unless they close once round the edge through distinct vertices.
+bool edge_ring(const TetComplex& c, const std::vector<uint32_t>& around_ab, uint32_t a, uint32_t b,
+               std::vector<uint32_t>& ring, std::vector<uint32_t>& ring_tet);
+
 // The 2-3 flip of the face opposite corner f of tetrahedron t; false (nothing changed) unless
 // both tetrahedra have one label (not obstacle), the three new ones are positive and the
 // worst quality rises (outside, no new edge may join two interface points).

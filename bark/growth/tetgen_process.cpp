@@ -1,10 +1,12 @@
 #include "bark/growth/tetgen_process.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -58,7 +60,7 @@ bool write_all(int fd, const void* data, size_t n) {
 
 }  // namespace
 
-TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in) {
+TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in, double time_limit_s) {
   int fds[2];
   if (::pipe(fds) != 0) throw TetgenFailure(std::string("cannot open a pipe to TetGen: ") + std::strerror(errno));
   // The forking thread holds the standard streams' locks across fork: a stream another thread
@@ -83,15 +85,34 @@ TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in) {
   ::close(fds[1]);
   std::vector<char> bytes;
   char buffer[1 << 16];
+  // TetGen may also loop for ever on a degenerate input (a grown interface folded within
+  // rounding did): past the time limit the child is killed.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(time_limit_s);
+  bool late = false;
   for (;;) {
+    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0) {
+      late = true;
+      break;
+    }
+    pollfd p{fds[0], POLLIN, 0};
+    const int ready = ::poll(&p, 1, int(std::min(left * 1000 + 1, 60000.0)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) continue;  // the deadline is checked above
     const ssize_t r = ::read(fds[0], buffer, sizeof buffer);
     if (r < 0 && errno == EINTR) continue;
     if (r <= 0) break;
     bytes.insert(bytes.end(), buffer, buffer + r);
   }
   ::close(fds[0]);
+  if (late) ::kill(pid, SIGKILL);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (late) {
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", time_limit_s);
+    throw TetgenFailure(std::string("TetGen did not finish within ") + limit + " s");
   }
   if (WIFSIGNALED(status))
     throw TetgenFailure("TetGen stopped on signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) +

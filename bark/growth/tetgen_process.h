@@ -28,8 +28,8 @@ class TetgenFailure : public std::runtime_error {
 };
 
 // tetrahedralize(switches, in, out) in a child process (its output to stdout and stderr
-// discarded). Throws TetgenFailure with what happened: TetGen's error code, or the signal that
-// stopped it.
-TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in);
+// discarded), killed if it has not finished after `time_limit_s` seconds. Throws TetgenFailure
+// with what happened: TetGen's error code, the signal that stopped it, or the time limit.
+TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in, double time_limit_s);
 
 }  // namespace phellem::bark

@@ -10,10 +10,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "bark/geometry/procedural_meshes.h"
+#include "bark/growth/cambial_growth.h"
 #include "bark/growth/complex_repair.h"
 #include "bark/growth/interface_coarsening.h"
+#include "bark/growth/interface_flips.h"
 #include "bark/growth/interface_motion.h"
 #include "bark/growth/interface_refinement.h"
 #include "bark/growth/tet_flips.h"
@@ -243,4 +246,51 @@ TEST(ComplexRepair, StepsAreBitIdenticalAtOneAndTwoThreads) {
   EXPECT_EQ(one.tets, two.tets);
   EXPECT_EQ(one.label, two.label);
   EXPECT_EQ(one.on_interface, two.on_interface);
+}
+
+namespace {
+
+// How many interface edges have opposite angles summing past the flips' threshold (not
+// Delaunay on the surface: one of their triangles is very obtuse there).
+long obtuse_edges(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces) {
+  std::map<std::pair<uint32_t, uint32_t>, double> sum;
+  for (const auto& f : faces)
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t a = f[size_t(e)], b = f[size_t(e + 1) % 3], p = f[size_t(e + 2) % 3];
+      const Eigen::Vector3d u = c.points[a] - c.points[p], v = c.points[b] - c.points[p];
+      sum[std::minmax(a, b)] += std::atan2(u.cross(v).norm(), u.dot(v));
+    }
+  long n = 0;
+  for (const auto& [e, s] : sum) n += s > InterfaceFlipSettings{}.min_opposite_deg * M_PI / 180;
+  return n;
+}
+
+}  // namespace
+
+TEST(InterfaceFlips, ObtuseTrianglesOfAJitteredLogFlipToTheOtherDiagonalKeepingAValidComplex) {
+  // A log's jittered side: many of its quads' diagonals join the obtuse corners.
+  CambialGrowthSettings s;  // only for the set-up: the log welded at its seam and tetrahedralized
+  s.ring_interval = 0;
+  TetComplex c = CambialGrowth(log_mesh(0.15, 0.6, 48, 24, 0.4, 3), {}, s, "s.json", "/objects/0").complex();
+  const auto faces_before = c.interface_faces();
+  const std::vector<uint8_t> on_before = c.on_interface;
+  const double v0 = c.volume(TetComplex::kInside);
+  const long obtuse_before = obtuse_edges(c, faces_before);
+  ASSERT_GT(obtuse_before, 20) << "the jitter should leave edges to flip";
+  TetAdjacency adj(c);
+  long flips = 0;
+  for (int pass = 0; pass < 4; ++pass) flips += flip_interface_edges(c, adj, interface_faces(c, adj), 1.0);
+  EXPECT_GT(flips, obtuse_before / 2);
+  EXPECT_EQ(c.first_inverted(), -1);
+  const auto faces = c.interface_faces();
+  EXPECT_TRUE(closed_manifold(faces));
+  EXPECT_EQ(faces.size(), faces_before.size());  // a flip trades two faces for two
+  EXPECT_EQ(sorted(interface_faces(c, TetAdjacency(c))), faces);
+  EXPECT_NE(rotated(faces), rotated(faces_before));
+  expect_consistent_flags(c, faces);
+  EXPECT_EQ(c.on_interface, on_before);  // the same points: only the edges between them change
+  // Far fewer obtuse edges; the shape kept (the faces flipped are within 40° of coplanar and
+  // the side is a gentle curve: the volume moves by the slivers between old and new faces).
+  EXPECT_LT(obtuse_edges(c, faces), obtuse_before / 4) << obtuse_before << " before";
+  EXPECT_NEAR(c.volume(TetComplex::kInside), v0, 0.002 * v0);
 }

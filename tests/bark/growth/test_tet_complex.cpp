@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <set>
 
@@ -94,4 +95,24 @@ TEST(TetComplex, AnOpenSurfaceIsRefusedAtTheObjectsPath) {
     EXPECT_NE(msg.find("/objects/2"), std::string::npos) << msg;
     EXPECT_NE(msg.find("must be closed"), std::string::npos) << msg;
   }
+}
+
+TEST(TetComplex, ATetrahedralizationPastItsTimeLimitIsStoppedAndRefusedNamingTheKnob) {
+  // TetGen looped for ever on a grown interface folded within rounding; the child it runs in
+  // is killed at the limit. A limit far below what the mesh needs stands in for that here.
+  TetSettings s;
+  s.time_limit = 1e-4;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    tetrahedralize_surface(icosphere(5, 0.5), s, "scene.json", "/objects/0/growth");
+    FAIL() << "no error";
+  } catch (const UserError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("/objects/0/growth"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("did not finish within 0.0001 s"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("time_limit"), std::string::npos) << msg;
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  // The same mesh with the default limit is made.
+  EXPECT_GT(tetrahedralize_surface(icosphere(5, 0.5), TetSettings{}, "scene.json", "/objects/0/growth").tets.size(), 1000u);
 }
