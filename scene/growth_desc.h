@@ -86,6 +86,9 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir);
 struct GrowthSize {
   double interface_vertices = 0;  // at the last step
   double bytes = 0;               // the tetrahedral complex, adjacency and rings held then
+  // TetGen's child process while it tetrahedralizes the volume at that size (a
+  // re-tetrahedralization near the end; the set-up's is smaller): its private memory.
+  double tetgen_bytes = 0;
 };
 GrowthSize estimate_growth_size(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge);
 

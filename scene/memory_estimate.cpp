@@ -365,6 +365,7 @@ MemoryItem base_item() { return {"the program itself", kBaseBytes, "", "", ""}; 
 // cracking model over the whole interface, rebuilt every step, at its size at the last step.
 struct GrowthCost {
   MemoryItem growth;
+  MemoryItem tetgen;  // TetGen's child process, re-tetrahedralizing at the grown size
   std::optional<MemoryItem> cracks;
   double crack_triangles = 0;  // the cracked mesh rendered at the end (0 without coupling)
 };
@@ -397,6 +398,10 @@ GrowthCost growth_cost(const ObjectDesc& o, size_t oi) {
   c.growth.what = "the cambial growth of " + name + " (its tetrahedra at the last step)";
   c.growth.where = path(oi, "/growth/edge_length");
   c.growth.advice = "raise the growth's edge_length band, or lower its thickness or steps / ring_interval";
+  c.tetgen = c.growth;
+  c.tetgen.bytes = size.tetgen_bytes;
+  c.tetgen.what = "TetGen's process tetrahedralizing the grown " + name;
+  c.tetgen.advice = "raise the growth's edge_length band, or lower its thickness";
   if (o.stress_bark && o.growth->cracks) {
     // A closed surface has two triangles per vertex; the coupling cracks it unpreprocessed.
     const double triangles = 2 * size.interface_vertices;
@@ -461,7 +466,8 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
       const ObjectDesc& o = desc.objects[oi];
       if (o.growth) {
         const GrowthCost g = growth_cost(o, oi);
-        MemoryMoment m{"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item(), g.growth}};
+        MemoryMoment m{"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"),
+                       {base_item(), g.growth, g.tetgen}};
         if (g.cracks) m.items.push_back(*g.cracks);
         e.moments.push_back(std::move(m));
         continue;  // a grown object's bark is cracked as it grows (or not at all)
@@ -508,6 +514,7 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
       MemoryMoment m{"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"), {base_item()}};
       m.items.insert(m.items.end(), surfaces.begin(), surfaces.end());
       m.items.push_back(g.growth);
+      m.items.push_back(g.tetgen);
       if (g.cracks) {
         m.items.push_back(*g.cracks);
         stress_triangles[oi] = g.crack_triangles;

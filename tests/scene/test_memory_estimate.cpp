@@ -119,6 +119,16 @@ TEST(MemoryEstimate, AGrowthCountsItsTetrahedraAndTheCrackingOfItsGrownSurface) 
     const MemoryMoment thick = moment(grown_log("0.24", "true"));
     EXPECT_GT(item_named(thick, "the crack coupling of")->bytes, 1.5 * coupling->bytes);
     EXPECT_GT(item_named(thick, "the cambial growth of")->bytes, 1.5 * item_named(on, "the cambial growth of")->bytes);
+    // TetGen's child at the grown size: its own item, in step with the complex (about 500
+    // bytes per tetrahedron measured, against 350 for the complex).
+    for (const MemoryMoment* mm : {&on, &thick}) {
+      const MemoryItem* tetgen = item_named(*mm, "TetGen's process tetrahedralizing the grown");
+      ASSERT_NE(tetgen, nullptr);
+      EXPECT_EQ(tetgen->where, "/objects/0/growth/edge_length");
+      const double complex = item_named(*mm, "the cambial growth of")->bytes;
+      EXPECT_GT(tetgen->bytes, 1.2 * complex);
+      EXPECT_LT(tetgen->bytes, 1.5 * complex);
+    }
     // No separate cracking of the ungrown input: the coupling is the object's cracking.
     const MemoryEstimate e = estimate_memory(parse_scene(grown_log("0.06", "true"), "scene.json", "."), req);
     for (const auto& m : e.moments) EXPECT_EQ(m.stage.rfind("cracking", 0), std::string::npos) << m.stage;
