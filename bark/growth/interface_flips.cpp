@@ -29,8 +29,8 @@ struct Faces {
 };
 
 // The angle tests on edge a–b with apexes p (face a–b–p) and q (face b–a–q).
-Faces test_faces(const TetComplex& c, uint32_t a, uint32_t b, uint32_t p, uint32_t q, double cos_turn,
-                 const InterfaceFlipSettings& settings) {
+Faces test_faces(const TetComplex& c, uint32_t a, uint32_t b, uint32_t p, uint32_t q, const InterfaceFlipSettings& settings) {
+  const double cos_turn = std::cos(settings.max_turn_deg * kPi / 180);
   const Eigen::Vector3d &A = c.points[a], &B = c.points[b], &P = c.points[p], &Q = c.points[q];
   Faces f;
   f.opposite = angle_at(P, A, B) + angle_at(Q, B, A);
@@ -113,7 +113,6 @@ bool flip_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
   // The interface faces on the edge, oriented outwards: those of the inside tetrahedra at the
   // two ends of the inside run.
   {
-    const double cos_turn = std::cos(settings.max_turn_deg * kPi / 180);
     // Face a–b–p belongs to the tetrahedron base(p, ring[1]) (inside) as its face opposite
     // ring[1]; its outward orientation decides which way round the test reads the apexes.
     const std::array<uint32_t, 4> t0 = base(p, ring[1]);
@@ -121,7 +120,7 @@ bool flip_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
     std::array<uint32_t, 3> f{t0[size_t(kTetFace[j][0])], t0[size_t(kTetFace[j][1])], t0[size_t(kTetFace[j][2])]};
     std::rotate(f.begin(), std::find(f.begin(), f.end(), p), f.end());  // p, x, y
     const uint32_t x = f[1], y = f[2];                                  // face p–x–y, {x, y} = {a, b}
-    const Faces faces = test_faces(c, x, y, p, q, cos_turn, settings);
+    const Faces faces = test_faces(c, x, y, p, q, settings);
     if (!faces.flat || faces.opposite <= settings.min_opposite_deg * kPi / 180) return false;
   }
   double before = 1e300;
@@ -166,19 +165,12 @@ bool flip_interface_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t 
   outside.push_back(p);
   if (best_fan(inside, made_in) < floor || best_fan(outside, made_out) < floor) return false;
   if (made_in.empty() && made_out.empty()) return false;
-  // n old slots for the new tetrahedra (labels set per slot): reuse, then append or erase.
-  std::vector<uint32_t> slots(around_ab.begin(), around_ab.end());
-  std::sort(slots.begin(), slots.end());
-  std::vector<std::pair<std::array<uint32_t, 4>, uint8_t>> made;
-  for (const auto& t : made_in) made.push_back({t, TetComplex::kInside});
-  for (const auto& t : made_out) made.push_back({t, TetComplex::kOutside});
-  size_t s = 0;
-  for (; s < std::min(slots.size(), made.size()); ++s) {
-    adj.set_tet(c, slots[s], made[s].first);
-    c.label[slots[s]] = made[s].second;
-  }
-  for (size_t i = s; i < made.size(); ++i) adj.add_tet(c, made[i].first, made[i].second);
-  for (size_t i = slots.size(); i-- > s;) adj.erase_tet(c, slots[i]);  // last first: indices stay valid
+  // The n old slots for the new tetrahedra, the inside fan's then the outside one's.
+  std::vector<std::array<uint32_t, 4>> made(made_in);
+  made.insert(made.end(), made_out.begin(), made_out.end());
+  std::vector<uint8_t> labels(made.size(), TetComplex::kOutside);
+  std::fill_n(labels.begin(), made_in.size(), TetComplex::kInside);
+  replace_tets(c, adj, around_ab, made, labels);
   return true;
 }
 
@@ -218,7 +210,7 @@ long flip_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<st
     for (uint32_t v : {a, b}) touched[v] = 1;
     for (uint32_t t : adj.around(a))
       for (uint32_t w : c.tets[t])
-        if (w < touched.size() && c.on_interface[w]) touched[w] = 1;
+        if (c.on_interface[w]) touched[w] = 1;  // (flips add no points: w < touched.size())
   }
   return flips;
 }

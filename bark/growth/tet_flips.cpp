@@ -116,11 +116,26 @@ bool flip_32(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Pro
   return remove_edge(c, adj, a, b, probe, stats, 3);
 }
 
+void replace_tets(TetComplex& c, TetAdjacency& adj, std::span<const uint32_t> old, std::span<const std::array<uint32_t, 4>> made,
+                  std::span<const uint8_t> labels) {
+  thread_local std::vector<uint32_t> slots;
+  slots.assign(old.begin(), old.end());
+  std::sort(slots.begin(), slots.end());
+  size_t k = 0;
+  for (; k < std::min(slots.size(), made.size()); ++k) {
+    adj.set_tet(c, slots[k], made[k]);
+    c.label[slots[k]] = labels[k];
+  }
+  for (size_t i = k; i < made.size(); ++i) adj.add_tet(c, made[i], labels[i]);
+  for (size_t i = slots.size(); i-- > k;) adj.erase_tet(c, slots[i]);  // last first: indices stay valid
+}
+
 bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const Probe& probe, FlipStats& stats,
                  int max_ring) {
   // Scratch buffers kept per thread: a step tries this hundreds of thousands of times.
-  thread_local std::vector<uint32_t> around_ab, ring, ring_tet, slots;
+  thread_local std::vector<uint32_t> around_ab, ring, ring_tet;
   thread_local std::vector<std::array<uint32_t, 4>> best_made, made;
+  thread_local std::vector<uint8_t> labels;
   adj.edge_tets(c, a, b, around_ab);
   const size_t n = around_ab.size();
   if (n < 3 || n > size_t(max_ring)) return false;
@@ -165,13 +180,9 @@ bool remove_edge(TetComplex& c, TetAdjacency& adj, uint32_t a, uint32_t b, const
     best_made = made;
   }
   if (best_made.empty()) return false;
-  // n old slots for 2(n − 2) new tetrahedra: reuse, then append or erase.
-  slots = around_ab;
-  std::sort(slots.begin(), slots.end());
-  size_t k = 0;
-  for (; k < std::min(slots.size(), best_made.size()); ++k) adj.set_tet(c, slots[k], best_made[k]);
-  for (size_t i = k; i < best_made.size(); ++i) adj.add_tet(c, best_made[i], label);
-  for (size_t i = slots.size(); i-- > k;) adj.erase_tet(c, slots[i]);  // last first: indices stay valid
+  // n old slots for 2(n − 2) new tetrahedra.
+  labels.assign(best_made.size(), label);
+  replace_tets(c, adj, around_ab, best_made, labels);
   if (n == 3)
     ++stats.flips32;
   else

@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "bark/growth/tet_adjacency.h"
@@ -51,6 +52,12 @@ double probe_quality(const TetComplex& c, const std::array<uint32_t, 4>& t, cons
 // unless they close once round the edge through distinct vertices.
 bool edge_ring(const TetComplex& c, const std::vector<uint32_t>& around_ab, uint32_t a, uint32_t b,
                std::vector<uint32_t>& ring, std::vector<uint32_t>& ring_tet);
+
+// Replaces the tetrahedra `old` (indices) by `made` (labels[i] for made[i]): the old slots are
+// reused in ascending order, then the rest of `made` appended or the rest of the slots erased
+// (the last first, so the indices left stay valid).
+void replace_tets(TetComplex& c, TetAdjacency& adj, std::span<const uint32_t> old, std::span<const std::array<uint32_t, 4>> made,
+                  std::span<const uint8_t> labels);
 
 // The 2-3 flip of the face opposite corner f of tetrahedron t; false (nothing changed) unless
 // both tetrahedra have one label (not obstacle), the three new ones are positive and the
