@@ -89,6 +89,9 @@ struct GrowthSize {
   // TetGen's child process while it tetrahedralizes the volume at that size (a
   // re-tetrahedralization near the end; the set-up's is smaller): its private memory.
   double tetgen_bytes = 0;
+  // The parent's own copies while it takes TetGen's volume in (the volume as received, as
+  // unpacked, and the relabelled complex with its adjacency), beside the complex it replaces.
+  double remesh_bytes = 0;
 };
 GrowthSize estimate_growth_size(const GrowthDesc& g, size_t input_vertices, double input_area, double mean_edge);
 

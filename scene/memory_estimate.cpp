@@ -366,6 +366,7 @@ MemoryItem base_item() { return {"the program itself", kBaseBytes, "", "", ""}; 
 struct GrowthCost {
   MemoryItem growth;
   MemoryItem tetgen;  // TetGen's child process, re-tetrahedralizing at the grown size
+  std::optional<MemoryItem> remesh;  // the parent taking a re-tetrahedralized volume in
   std::optional<MemoryItem> cracks;
   double crack_triangles = 0;  // the cracked mesh rendered at the end (0 without coupling)
 };
@@ -402,6 +403,14 @@ GrowthCost growth_cost(const ObjectDesc& o, size_t oi) {
   c.tetgen.bytes = size.tetgen_bytes;
   c.tetgen.what = "TetGen's process tetrahedralizing the grown " + name;
   c.tetgen.advice = "raise the growth's edge_length band, or lower its thickness";
+  if (size.remesh_bytes > 0) {
+    MemoryItem r = c.growth;
+    r.bytes = size.remesh_bytes;
+    r.what = "the new volume of " + name + " taken in from TetGen beside the old one";
+    r.where = path(oi, "/growth/tetrahedra/remesh_blocked");
+    r.advice = "raise the growth's edge_length band, or set \"tetrahedra\": {\"remesh_blocked\": 0}";
+    c.remesh = r;
+  }
   if (o.stress_bark && o.growth->cracks) {
     // A closed surface has two triangles per vertex; the coupling cracks it unpreprocessed.
     const double triangles = 2 * size.interface_vertices;
@@ -468,6 +477,7 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
         const GrowthCost g = growth_cost(o, oi);
         MemoryMoment m{"growing " + object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh"),
                        {base_item(), g.growth, g.tetgen}};
+        if (g.remesh) m.items.push_back(*g.remesh);
         if (g.cracks) m.items.push_back(*g.cracks);
         e.moments.push_back(std::move(m));
         continue;  // a grown object's bark is cracked as it grows (or not at all)
@@ -515,6 +525,7 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
       m.items.insert(m.items.end(), surfaces.begin(), surfaces.end());
       m.items.push_back(g.growth);
       m.items.push_back(g.tetgen);
+      if (g.remesh) m.items.push_back(*g.remesh);
       if (g.cracks) {
         m.items.push_back(*g.cracks);
         stress_triangles[oi] = g.crack_triangles;

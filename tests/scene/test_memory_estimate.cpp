@@ -119,16 +119,31 @@ TEST(MemoryEstimate, AGrowthCountsItsTetrahedraAndTheCrackingOfItsGrownSurface) 
     const MemoryMoment thick = moment(grown_log("0.24", "true"));
     EXPECT_GT(item_named(thick, "the crack coupling of")->bytes, 1.5 * coupling->bytes);
     EXPECT_GT(item_named(thick, "the cambial growth of")->bytes, 1.5 * item_named(on, "the cambial growth of")->bytes);
-    // TetGen's child at the grown size: its own item, in step with the complex (about 500
-    // bytes per tetrahedron measured, against 350 for the complex).
-    for (const MemoryMoment* mm : {&on, &thick}) {
-      const MemoryItem* tetgen = item_named(*mm, "TetGen's process tetrahedralizing the grown");
-      ASSERT_NE(tetgen, nullptr);
-      EXPECT_EQ(tetgen->where, "/objects/0/growth/edge_length");
-      const double complex = item_named(*mm, "the cambial growth of")->bytes;
-      EXPECT_GT(tetgen->bytes, 1.2 * complex);
-      EXPECT_LT(tetgen->bytes, 1.5 * complex);
-    }
+    // TetGen's child at the grown size (about 500 bytes per tetrahedron measured, against 350
+    // for the complex), and the parent's copies while it takes a re-tetrahedralized volume in
+    // (up to 176 measured): items of their own, in step with the complex.
+    struct Expected {
+      const char* what;
+      const char* where;
+      double low, high;  // × the complex's bytes
+    };
+    for (const Expected& x : {Expected{"TetGen's process tetrahedralizing the grown", "/objects/0/growth/edge_length", 1.2, 1.5},
+                              Expected{"the new volume of", "/objects/0/growth/tetrahedra/remesh_blocked", 0.4, 0.6}})
+      for (const MemoryMoment* mm : {&on, &thick}) {
+        const MemoryItem* item = item_named(*mm, x.what);
+        ASSERT_NE(item, nullptr) << x.what;
+        EXPECT_EQ(item->where, x.where);
+        const double complex = item_named(*mm, "the cambial growth of")->bytes;
+        EXPECT_GT(item->bytes, x.low * complex) << x.what;
+        EXPECT_LT(item->bytes, x.high * complex) << x.what;
+      }
+    // A growth that never re-tetrahedralizes takes no new volume in (TetGen still runs once).
+    std::string never = grown_log("0.06", "true");
+    const size_t at = never.find("\"growth\": {");
+    ASSERT_NE(at, std::string::npos);
+    never.insert(at + 11, "\"tetrahedra\": {\"remesh_blocked\": 0}, ");
+    EXPECT_EQ(item_named(moment(never), "the new volume of"), nullptr);
+    EXPECT_NE(item_named(moment(never), "TetGen's process tetrahedralizing the grown"), nullptr);
     // No separate cracking of the ungrown input: the coupling is the object's cracking.
     const MemoryEstimate e = estimate_memory(parse_scene(grown_log("0.06", "true"), "scene.json", "."), req);
     for (const auto& m : e.moments) EXPECT_EQ(m.stage.rfind("cracking", 0), std::string::npos) << m.stage;
