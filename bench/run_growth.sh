@@ -20,6 +20,9 @@ run() {  # scene -> "growth_median setup_median steps v_start v_end"
 echo "tree close-up (threads: $(nproc))"
 read -r g s steps v0 v1 <<<"$(run bench/scenes/growth_tree_closeup.json)"
 python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step (paper 162 ms: %.1fx faster), TetGen set-up %.2f s' % ($v0, $v1, $steps, $g / $steps * 1e3, 162 / ($g / $steps * 1e3), $s))"
+echo "the same growth on a sphere of the log's area (no rims; bench/scenes/growth_sphere_closeup.json)"
+read -r g s steps v0 v1 <<<"$(run bench/scenes/growth_sphere_closeup.json)"
+python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step, TetGen set-up %.2f s' % ($v0, $v1, $steps, $g / $steps * 1e3, $s))"
 echo
 echo "vertices_start  vertices_end  steps  ms_per_step  us_per_vertex_step  setup_s"
 for n in 8000 20000 78000; do
