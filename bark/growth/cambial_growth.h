@@ -106,6 +106,7 @@ class CambialGrowth {
   TetComplex complex_;
   std::unique_ptr<GrowthCracks> cracks_;
   std::optional<TetAdjacency> adjacency_;  // of complex_, kept in step by every operation
+  std::vector<double> owed_;               // by point: what blocked moves left (advance_interface)
   std::vector<GrowthObstacle> obstacles_;  // welded, as TetGen had them first (for re-tetrahedralizing)
   std::vector<std::array<uint32_t, 3>> obstacle_faces_;
   std::vector<GrowthRing> rings_;

@@ -27,7 +27,11 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   if (settings.interface_flips) st.interface_flips = flip_interface_edges(c, adj, faces, max_length, settings.flips);
   std::vector<std::array<uint32_t, 2>> edges;  // the interface's edges after the splits
   st.splits = split_long_interface_edges(c, adj, faces, max_length, edges);
-  st.collapses = collapse_short_interface_edges(c, adj, edges, min_length, max_length);
+  long stretched = 0;
+  st.collapses = collapse_short_interface_edges(c, adj, edges, min_length, max_length, &stretched);
+  // Short edges may collapse into edges past the upper bound (interface_coarsening.h): those
+  // are split again, so every interface edge ends the step inside the band.
+  if (stretched > 0) st.splits += split_long_interface_edges(c, adj, interface_faces(c, adj), max_length);
   std::vector<uint32_t> interface;
   for (uint32_t v = 0; v < c.points.size(); ++v)
     if (c.on_interface[v]) interface.push_back(v);

@@ -239,7 +239,7 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
 }
 
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 2>>& edges,
-                                    double min_length, double max_length) {
+                                    double min_length, double max_length, long* stretched) {
   long collapses = 0;
   // A collapse of a–b reads only the tetrahedra around a and b (corners, positions, flags) and
   // those sharing a face with them (labels). Collapse number n stamps n on every corner of
@@ -307,7 +307,12 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std:
       if (const auto it = failed_at.find(key); it != failed_at.end() && !touched_since(a, b, it->second)) continue;
       corners.clear();
       gather(a, b);
-      if (collapse_interface_edge(c, adj, a, b, max_length)) {
+      bool done = collapse_interface_edge(c, adj, a, b, max_length);
+      if (!done && stretched && collapse_interface_edge(c, adj, a, b, kStretchedCollapse * max_length)) {
+        done = true;
+        if (stretched) ++*stretched;
+      }
+      if (done) {
         ++made;
         gather(a, b);
         for (uint32_t w : corners) stamp[w] = made_total;

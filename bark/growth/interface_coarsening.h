@@ -22,6 +22,14 @@ namespace phellem::bark {
 // Collapses interface edges shorter than `min_length` (m), shortest first (ties by index),
 // until none is or none can be, never making an interface edge longer than `max_length`;
 // returns the number of collapses. Deterministic.
+// With `stretched` given, a collapse that the upper bound refuses is made anyway if no edge
+// comes out longer than kStretchedCollapse × `max_length`, and counted there; the caller then
+// splits the long edges it made (growth_repair_step does, so every edge ends a step inside the
+// band). Where the surface stretches fast (the rims of a log's flat ends, which round into a
+// torus as they grow) every edge around a short one is close to the upper bound: refusing its
+// collapse left it shrinking step by step until its triangles folded over (the close-up, 60
+// steps: 14.4k refusals of edges under 3 mm for the length alone, the first inverted
+// interface face at step 23, stuck vertices and pleats from there on).
 long collapse_short_interface_edges(TetComplex& c, double min_length,
                                     double max_length = std::numeric_limits<double>::infinity());
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length,
@@ -29,7 +37,9 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
 // The same from the interface's edges the caller has (each once, {a < b}, any order; e.g. from
 // split_long_interface_edges) instead of a scan of every tetrahedron for them.
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 2>>& edges,
-                                    double min_length, double max_length = std::numeric_limits<double>::infinity());
+                                    double min_length, double max_length = std::numeric_limits<double>::infinity(),
+                                    long* stretched = nullptr);
+constexpr double kStretchedCollapse = 1.5;
 
 // Collapses the interface edge a–b if the conditions above hold, the removed point merging
 // into the survivor (placed at the midpoint when both may move); true if it did.

@@ -127,7 +127,8 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const Gro
 }
 
 InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
-                                     const GrowthFunction& growth, double t0, double t1) {
+                                     const GrowthFunction& growth, double t0, double t1, std::vector<double>* owed) {
+  if (owed) owed->resize(c.points.size(), 0.0);
   InterfaceStepStats st;
   const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
   std::vector<uint32_t> movers;
@@ -137,6 +138,7 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
   // vertex, evaluated in parallel).
   std::vector<Eigen::Vector3d> target(movers.size());
   std::vector<uint8_t> active(movers.size(), 0);
+  std::vector<double> thickening(movers.size(), 0.0), wanted(movers.size(), 0.0);  // this step's; with what is owed
   const bool turned = growth.has_directions() || !c.direction.empty();
   // Sec. 4.6: with growth turned off the normal, vertices slide, and their UVs move through
   // the texture Jacobian taken before the motion.
@@ -155,8 +157,13 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
       if (!c.direction.empty()) turn = GrowthFunction::turned_towards(turn, n, c.direction[v]);
       dir = turn.cast<double>();
     }
-    target[i] = c.points[v] + d * dir;
     active[i] = d != 0 && std::isfinite(d);
+    // What an earlier blocked move left owing, repaid at most at this step's own rate.
+    double catch_up = 0;
+    if (owed && active[i] && (*owed)[v] * d > 0) catch_up = std::copysign(std::min(std::abs((*owed)[v]), std::abs(d)), d);
+    thickening[i] = d;
+    wanted[i] = d + catch_up;
+    target[i] = c.points[v] + wanted[i] * dir;
   });
   const std::vector<Eigen::Vector3d> start = [&] {
     std::vector<Eigen::Vector3d> s(movers.size());
@@ -191,6 +198,17 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     else
       ++st.shortened;
   }
+  if (owed)
+    for (size_t i = 0; i < movers.size(); ++i) {
+      const uint32_t v = movers[i];
+      if (!active[i]) continue;
+      // The share of the segment start → target the vertex went (the moves go straight along it).
+      const double full = (target[i] - start[i]).norm();
+      const double went = full > 0 ? (c.points[v] - start[i]).norm() / full : 1.0;
+      const double left = (*owed)[v] + thickening[i] - went * wanted[i];
+      // Never owed against the growth, and at most ten steps' worth.
+      (*owed)[v] = left * thickening[i] > 0 ? std::copysign(std::min(std::abs(left), 10 * std::abs(thickening[i])), left) : 0.0;
+    }
   if (!gradients.empty())
     for (size_t i = 0; i < movers.size(); ++i) {
       const uint32_t v = movers[i];

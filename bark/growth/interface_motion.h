@@ -44,7 +44,12 @@ InterfaceStepStats advance_interface(TetComplex& c, const GrowthFunction& growth
 InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const GrowthFunction& growth, double t0, double t1);
 // The same with the interface faces (interface_faces(c, adj)) the caller has already: the
 // motion moves points and retessellates only outside tetrahedra, so they hold after it too.
+// With `owed` (one value per point, grown with the points, new points 0), a vertex whose move
+// was shortened or clamped owes the rest, in metres along its growth direction, and catches up
+// by at most its own step's thickening on each later step: a move blocked for a while by the
+// mesh, not by an obstacle, leaves no lasting pit, and the surface converges to the offset the
+// growth function integrates to.
 InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
-                                     const GrowthFunction& growth, double t0, double t1);
+                                     const GrowthFunction& growth, double t0, double t1, std::vector<double>* owed = nullptr);
 
 }  // namespace phellem::bark

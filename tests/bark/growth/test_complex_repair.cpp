@@ -174,6 +174,37 @@ TEST(InterfaceCoarsening, ShortEdgesCollapseKeepingAClosedManifoldAndPositiveTet
   EXPECT_GT(c.volume(TetComplex::kInside), v0 * 0.95);
 }
 
+TEST(InterfaceCoarsening, AShortEdgeAmongLongOnesCollapsesIntoEdgesTheRepairSplitsAgain) {
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+  const double band_max = edge_range(c).second;
+  // Pull an interface vertex most of the way to a neighbour, as a log's rim does to the points
+  // its splits make: a short edge whose collapse would make edges past the upper bound.
+  const auto edges = interface_edges(c);
+  const auto [a, b] = edges[edges.size() / 2];
+  c.points[b] = c.points[a] + 0.12 * (c.points[b] - c.points[a]);
+  ASSERT_EQ(c.first_inverted(), -1);
+  const double short_length = (c.points[a] - c.points[b]).norm();
+  const double min_length = 0.4 * band_max;
+  ASSERT_LT(short_length, min_length);
+  TetAdjacency adj(c);
+  // The upper bound refuses it as it is (the collapse lands near a, far from b's other neighbours)...
+  TetComplex probe = c;
+  TetAdjacency probe_adj(probe);
+  EXPECT_FALSE(collapse_interface_edge(probe, probe_adj, a, b, band_max));
+  // ... and the repair collapses it all the same, then splits what came out too long.
+  const size_t faces_before = c.interface_faces().size();
+  const RepairStats st = growth_repair_step(c, adj, min_length, band_max);
+  EXPECT_GT(st.collapses, 0);
+  EXPECT_GT(st.splits, 0);
+  EXPECT_EQ(c.first_inverted(), -1);
+  const auto faces = c.interface_faces();
+  EXPECT_TRUE(closed_manifold(faces));
+  expect_consistent_flags(c, faces);
+  EXPECT_TRUE(!c.on_interface[a] || !c.on_interface[b] || !adj.has_edge(c, a, b)) << "the short edge is gone";
+  for (const auto& e : interface_edges(c)) EXPECT_LE((c.points[e[0]] - c.points[e[1]]).norm(), band_max);
+  EXPECT_GT(faces.size(), faces_before - 8);
+}
+
 TEST(TetFlips, QualityRepairNeverTouchesTheInterfaceNorLowersTheWorstOutsideTetrahedron) {
   TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
   // Squash and split the outside: grow the interface a few steps with splits but no repair.

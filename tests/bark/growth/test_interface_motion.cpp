@@ -89,10 +89,49 @@ TEST(InterfaceMotion, AMoveThatWouldInvertATetrahedronIsClampedNotApplied) {
     }
 }
 
-namespace {
-
-
-}  // namespace
+TEST(InterfaceMotion, ABlockedMoveOwesItsRestAndCatchesUpAtMostAtItsOwnRate) {
+  const double r0 = 0.5;
+  TetComplex c = tetrahedralize_surface(icosphere(3, r0), TetSettings{}, "s.json", "/objects/0");
+  TetAdjacency adj(c);
+  const GrowthFunction g = growth_of(1.0);
+  const double d = g.cumulative(0.01);  // this step's thickening, about 10 mm (edges about 80 mm)
+  std::vector<uint32_t> interface;
+  for (uint32_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i]) interface.push_back(i);
+  ASSERT_GT(interface.size(), 10u);
+  // A sphere's vertex normals are radial: each vertex goes out by what it moves.
+  const uint32_t part = interface[0], many = interface[5], against = interface[9];
+  std::vector<double> owed(c.points.size(), 0.0);
+  owed[part] = 0.4 * d;   // repaid whole this step
+  owed[many] = 3.0 * d;   // repaid at most d a step
+  owed[against] = -0.4 * d;  // against the growth: never owed, dropped
+  advance_interface(c, adj, interface_faces(c, adj), g, 0.0, 0.01, &owed);
+  EXPECT_EQ(c.first_inverted(), -1);
+  ASSERT_EQ(owed.size(), c.points.size());
+  EXPECT_NEAR(c.points[part].norm(), r0 + 1.4 * d, 1e-9);
+  EXPECT_NEAR(c.points[many].norm(), r0 + 2.0 * d, 1e-9);
+  EXPECT_NEAR(c.points[against].norm(), r0 + d, 1e-9);
+  EXPECT_NEAR(c.points[interface[3]].norm(), r0 + d, 1e-9);
+  EXPECT_NEAR(owed[part], 0.0, 1e-12);
+  EXPECT_NEAR(owed[many], 2.0 * d, 1e-12);
+  EXPECT_EQ(owed[against], 0.0);
+  // A move the box stops (growth far past the padding) owes what it did not go.
+  std::vector<double> left(c.points.size(), 0.0);
+  const GrowthFunction far = growth_of(3.0);
+  long stopped = 0;
+  for (int k = 0; k < 4; ++k) {
+    const InterfaceStepStats st = advance_interface(c, adj, interface_faces(c, adj), far, 0.5 * k, 0.5 * (k + 1), &left);
+    stopped += st.clamped + st.shortened;
+  }
+  ASSERT_GT(stopped, 0);
+  double most = 0;
+  for (uint32_t v : interface) {
+    EXPECT_GE(left[v], 0.0);
+    most = std::max(most, left[v]);
+  }
+  EXPECT_GT(most, 0.05) << "a stopped vertex owes the rest of its step";
+  EXPECT_LE(most, 10 * far.thickening(1.5, 2.0, Vec3f::Zero(), Vec3f::UnitX()) + 1e-12) << "at most ten steps' worth";
+}
 
 TEST(InterfaceRefinement, SplitsKeepTheGrowingSphereFineClosedAndPositive) {
   const double r0 = 0.3;
