@@ -310,7 +310,7 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std:
       bool done = collapse_interface_edge(c, adj, a, b, max_length);
       if (!done && stretched && collapse_interface_edge(c, adj, a, b, kStretchedCollapse * max_length)) {
         done = true;
-        if (stretched) ++*stretched;
+        ++*stretched;
       }
       if (done) {
         ++made;
