@@ -154,17 +154,8 @@ bool CambialGrowth::step() {
   std::sort(faces.begin(), faces.end());
   if (settings_.reverse)
     smooth_interface_curvature(complex_, *adjacency_, faces, 0.1);
-  else if (settings_.curvature > 0) {
-    // What the term lifts a lagging vertex by repays what its blocked moves owe (the two
-    // together overshot: 0.7 mm ahead on the large-growth benchmark).
-    const std::vector<Eigen::Vector3d> moved_to = complex_.points;
-    smooth_interface_curvature(complex_, *adjacency_, faces, settings_.curvature, true);
-    for (uint32_t v = 0; v < owed_.size(); ++v)
-      if (owed_[v] != 0) {
-        const double lift = (complex_.points[v] - moved_to[v]).norm();
-        owed_[v] = owed_[v] > 0 ? std::max(0.0, owed_[v] - lift) : std::min(0.0, owed_[v] + lift);
-      }
-  }
+  else if (settings_.curvature > 0)
+    smooth_interface_curvature(complex_, *adjacency_, faces, settings_.curvature, true, &owed_);  // its lift repays what is owed
   // Sec. 4.5: vertices that came within half the step's thickening of an obstacle or of
   // another part of the front stop there for good (a crease wound where fronts meet).
   const double step_thickening = std::abs(settings_.function.cumulative(age_at(step_ + 1)) -

@@ -1,5 +1,7 @@
 #include "bark/growth/interface_curvature.h"
 
+#include <algorithm>
+
 #include "bark/growth/interface_motion.h"
 #include "bark/growth/tet_adjacency.h"
 
@@ -11,7 +13,7 @@ long smooth_interface_curvature(TetComplex& c, double rate, bool only_outwards) 
 }
 
 long smooth_interface_curvature(TetComplex& c, const TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
-                                double rate, bool only_outwards) {
+                                double rate, bool only_outwards, std::vector<double>* owed) {
   const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
   std::vector<Eigen::Vector3d> sum(c.points.size(), Eigen::Vector3d::Zero());
   std::vector<int> count(c.points.size(), 0);
@@ -40,6 +42,11 @@ long smooth_interface_curvature(TetComplex& c, const TetAdjacency& adj, const st
       c.points[v] = start;
     }
     moved += c.points[v] != start;
+    if (owed && v < owed->size() && (*owed)[v] != 0) {
+      double& o = (*owed)[v];
+      const double lift = (c.points[v] - start).norm();
+      o = o > 0 ? std::max(0.0, o - lift) : std::min(0.0, o + lift);
+    }
   }
   return moved;
 }

@@ -282,7 +282,7 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
   try {
     out = tetrahedralize_in_child(switches, in, s.time_limit);
   } catch (const TetgenFailure& e) {
-    const bool late = std::string(e.what()).starts_with("TetGen did not finish");
+    const bool late = e.timed_out();
     throw UserError(file, where,
                     "TetGen cannot tetrahedralize the surface" + std::string(obstacles.empty() ? "" : " and its obstacles") +
                         " (" + e.what() +

@@ -112,7 +112,7 @@ TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in, do
   if (late) {
     char limit[32];
     std::snprintf(limit, sizeof limit, "%g", time_limit_s);
-    throw TetgenFailure(std::string("TetGen did not finish within ") + limit + " s");
+    throw TetgenFailure(std::string("TetGen did not finish within ") + limit + " s", true);
   }
   if (WIFSIGNALED(status))
     throw TetgenFailure("TetGen stopped on signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) +

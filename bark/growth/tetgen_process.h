@@ -24,7 +24,12 @@ struct TetgenMesh {
 
 class TetgenFailure : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit TetgenFailure(const std::string& what, bool timed_out = false) : std::runtime_error(what), timed_out_(timed_out) {}
+  // Stopped at its time limit (rather than failing on its own).
+  bool timed_out() const { return timed_out_; }
+
+ private:
+  bool timed_out_;
 };
 
 // tetrahedralize(switches, in, out) in a child process (its output to stdout and stderr
