@@ -1,9 +1,15 @@
 #include "bark/growth/complex_repair.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
 #include "bark/growth/free_vertex_removal.h"
 #include "bark/growth/interface_coarsening.h"
 #include "bark/growth/interface_flips.h"
 #include "bark/growth/interface_refinement.h"
+#include "bark/growth/point_marks.h"
 #include "bark/growth/tet_flips.h"
 
 namespace phellem::bark {
@@ -32,22 +38,36 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   // Short edges may collapse into edges past the upper bound (interface_coarsening.h): those
   // are split again, so every interface edge ends the step inside the band.
   if (stretched > 0) st.splits += split_long_interface_edges(c, adj, interface_faces(c, adj), max_length);
-  std::vector<uint32_t> interface;
-  for (uint32_t v = 0; v < c.points.size(); ++v)
-    if (c.on_interface[v]) interface.push_back(v);
+  const std::vector<uint32_t> interface = marked(c.on_interface, 1);
   // The free vertices the front pressed against the interface (a poor tetrahedron around them):
-  // removed, in index order, where that raises their worst quality.
+  // removed, in index order, where that raises their worst quality. Their worst qualities
+  // first, in parallel (a pure read); a removal changes only the tetrahedra around the removed
+  // vertex, so only its neighbours' are taken again.
   FlipStats removal;
   {
     std::vector<uint8_t> near(c.points.size(), 0);
-    for (uint32_t v : interface)
-      for (uint32_t t : adj.around(v))
-        for (uint32_t w : c.tets[t]) near[w] = !c.on_interface[w] && !c.on_box[w] && !c.frozen[w];
-    for (uint32_t w = 0; w < near.size(); ++w) {
-      if (!near[w] || adj.unused(w)) continue;
+    mark_around(c, adj, interface, near, 1, [&](uint32_t w) { return !c.on_interface[w] && !c.on_box[w] && !c.frozen[w]; });
+    std::vector<uint32_t> candidates;
+    for (uint32_t w = 0; w < near.size(); ++w)
+      if (near[w] && !adj.unused(w)) candidates.push_back(w);
+    auto worst_around = [&](uint32_t w) {
       double worst = 1e300;
       for (uint32_t t : adj.around(w)) worst = std::min(worst, tet_quality(c, c.tets[t]));
-      if (worst < settings.removal_quality) remove_free_vertex(c, adj, w, Probe{}, removal);
+      return worst;
+    };
+    std::vector<double> worst(candidates.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, candidates.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i) worst[i] = worst_around(candidates[i]);
+    });
+    std::vector<uint8_t> changed(c.points.size(), 0);
+    std::vector<uint32_t> star_points;
+    for (size_t i = 0; i < candidates.size(); ++i) {
+      const uint32_t w = candidates[i];
+      if (!((changed[w] ? worst_around(w) : worst[i]) < settings.removal_quality)) continue;
+      star_points.clear();
+      for (uint32_t t : adj.around(w)) star_points.insert(star_points.end(), c.tets[t].begin(), c.tets[t].end());
+      if (remove_free_vertex(c, adj, w, Probe{}, removal))
+        for (uint32_t x : star_points) changed[x] = 1;
     }
   }
   const FlipStats fs = improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length, settings.quality_passes);

@@ -1,10 +1,12 @@
 #include "bark/growth/interface_motion.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "bark/growth/point_marks.h"
 #include "bark/growth/tet_flips.h"
 #include "bark/growth/texture_transport.h"
 
@@ -68,35 +70,85 @@ void carry_free_vertices(TetComplex& c, const TetAdjacency& adj, const std::vect
   const size_t n = c.points.size();
   std::vector<Eigen::Vector3d> shift(n, Eigen::Vector3d::Zero());
   std::vector<uint8_t> ring(n, 0);  // 3: a moving interface vertex, 1, 2: its free rings
+  std::vector<uint32_t> moving;
   for (size_t i = 0; i < movers.size(); ++i)
     if (active[i]) {
       shift[movers[i]] = target[i] - c.points[movers[i]];
       ring[movers[i]] = 3;
+      moving.push_back(movers[i]);
     }
+  // Each free vertex of ring r + 1 takes the mean of its ring-r neighbours' shifts (ring 0: the
+  // moving vertices), each counted once per tetrahedron the two share, gathered in parallel
+  // and summed in ascending neighbour order (the same bits whatever the thread count).
   std::vector<uint32_t> rings[2];
-  std::vector<int> count(n, 0);
   for (int r = 0; r < 2; ++r) {
     const uint8_t from = r == 0 ? 3 : 1;
-    for (uint32_t v = 0; v < n; ++v) {
-      if (ring[v] != from) continue;
-      for (uint32_t t : adj.around(v))
-        for (uint32_t w : c.tets[t]) {
-          if (!free_point(c, w) || (ring[w] != 0 && ring[w] != r + 1)) continue;
-          if (ring[w] == 0) {
-            ring[w] = uint8_t(r + 1);
-            rings[r].push_back(w);
-          }
-          shift[w] += (r == 0 ? kCarry[0] : kCarry[1] / kCarry[0]) * shift[v];  // each tet adds once per corner pair
-          ++count[w];
-        }
-    }
-    for (uint32_t w : rings[r]) shift[w] /= count[w];
+    mark_around(c, adj, r == 0 ? std::span<const uint32_t>(moving) : std::span<const uint32_t>(rings[0]), ring,
+                uint8_t(r + 1), [&](uint32_t w) { return free_point(c, w); });
+    rings[r] = marked(ring, uint8_t(r + 1));
+    const double factor = r == 0 ? kCarry[0] : kCarry[1] / kCarry[0];
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rings[r].size(), 256), [&](const tbb::blocked_range<size_t>& range) {
+      std::vector<uint32_t> from_points;
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        const uint32_t w = rings[r][i];
+        from_points.clear();
+        for (uint32_t t : adj.around(w))
+          for (uint32_t v : c.tets[t])
+            if (ring[v] == from) from_points.push_back(v);
+        std::sort(from_points.begin(), from_points.end());
+        for (uint32_t v : from_points) shift[w] += factor * shift[v];
+        shift[w] /= double(from_points.size());
+      }
+    });
   }
-  for (int r = 1; r >= 0; --r) {
-    std::sort(rings[r].begin(), rings[r].end());
+  for (int r = 1; r >= 0; --r)  // the second ring first, each in index order
     for (uint32_t w : rings[r])
       if (shift[w].squaredNorm() > 0) move_towards(c, adj, w, c.points[w] + shift[w]);
+}
+
+// Smoothing of the free vertices within two rings of the interface: towards the mean of
+// their tetrahedra's other corners, where every tetrahedron stays positive and the worst
+// quality does not drop. In index order (each vertex sees its predecessors' moves).
+long smooth_near_interface(TetComplex& c, const TetAdjacency& adj) {
+  const size_t n = c.points.size();
+  std::vector<uint8_t> ring(n, 0);
+  auto off_interface = [&](uint32_t w) { return !c.on_interface[w]; };
+  mark_around(c, adj, marked(c.on_interface, 1), ring, 1, off_interface);
+  mark_around(c, adj, marked(ring, 1), ring, 2, off_interface);
+  std::vector<uint32_t> movable;
+  for (uint32_t v = 0; v < n; ++v)
+    if (ring[v] && !c.on_box[v] && !c.frozen[v] && !adj.around(v).empty()) movable.push_back(v);
+  long smoothed = 0;
+  for (uint32_t v : movable) {
+    const auto around = adj.around(v);
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    int count = 0;
+    double before = 1e300;
+    uint32_t worst = around.front();
+    for (uint32_t t : around) {
+      const double q = tet_quality(c, c.tets[t]);
+      if (q < before) {
+        before = q;
+        worst = t;
+      }
+      for (uint32_t w : c.tets[t])
+        if (w != v) {
+          mean += c.points[w];
+          ++count;
+        }
+    }
+    const Eigen::Vector3d from = c.points[v];
+    c.points[v] = from + 0.5 * (mean / count - from);
+    // No tetrahedron below the worst before: the worst first (the one a rejected move most
+    // often makes worse), then the rest, stopping at the first below.
+    bool kept = !(tet_quality(c, c.tets[worst]) < before);
+    for (size_t i = 0; kept && i < around.size(); ++i) kept = !(tet_quality(c, c.tets[around[i]]) < before);
+    if (kept && all_positive(c, around))
+      ++smoothed;
+    else
+      c.points[v] = from;
   }
+  return smoothed;
 }
 
 }  // namespace
@@ -218,51 +270,7 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
   st.relocated = fs.relocated;
   st.removed = fs.removed;
 
-  // Smoothing of the free vertices within two rings of the interface: towards the mean of
-  // their tetrahedra's other corners, where every tetrahedron stays positive and the worst
-  // quality does not drop.
-  std::vector<uint8_t> ring(c.points.size(), 0);
-  for (uint32_t v = 0; v < c.points.size(); ++v)
-    if (c.on_interface[v])
-      for (uint32_t t : adj.around(v))
-        for (uint32_t w : c.tets[t])
-          if (!c.on_interface[w]) ring[w] = 1;
-  for (uint32_t v = 0; v < c.points.size(); ++v)
-    if (ring[v] == 1)
-      for (uint32_t t : adj.around(v))
-        for (uint32_t w : c.tets[t])
-          if (!c.on_interface[w] && !ring[w]) ring[w] = 2;
-  for (uint32_t v = 0; v < c.points.size(); ++v) {
-    if (!ring[v] || c.on_box[v] || c.frozen[v]) continue;
-    const auto around = adj.around(v);
-    if (around.empty()) continue;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    int n = 0;
-    double before = 1e300;
-    uint32_t worst = around.front();
-    for (uint32_t t : around) {
-      const double q = tet_quality(c, c.tets[t]);
-      if (q < before) {
-        before = q;
-        worst = t;
-      }
-      for (uint32_t w : c.tets[t])
-        if (w != v) {
-          mean += c.points[w];
-          ++n;
-        }
-    }
-    const Eigen::Vector3d from = c.points[v];
-    c.points[v] = from + 0.5 * (mean / n - from);
-    // No tetrahedron below the worst before: the worst first (the one a rejected move most
-    // often makes worse), then the rest, stopping at the first below.
-    bool kept = !(tet_quality(c, c.tets[worst]) < before);
-    for (size_t i = 0; kept && i < around.size(); ++i) kept = !(tet_quality(c, c.tets[around[i]]) < before);
-    if (kept && all_positive(c, around))
-      ++st.smoothed;
-    else
-      c.points[v] = from;
-  }
+  st.smoothed = smooth_near_interface(c, adj);
   return st;
 }
 
