@@ -107,7 +107,15 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
                                 {"contact", st.contact_s},
                                 {"repair", st.repair_s},
                                 {"remesh", st.remesh_s},
-                                {"crack", t_crack}}}};
+                                {"crack", t_crack},
+                                {"motion_parts",
+                                 {{"carry", st.carry_s}, {"moves", st.moves_s}, {"unblock", st.unblock_s}, {"smoothing", st.smooth_s}}},
+                                {"contact_parts", {{"curvature", st.curvature_s}}},
+                                {"repair_parts",
+                                 {{"interface_flips", st.flips_s},
+                                  {"splits_collapses", st.band_s},
+                                  {"vertex_removal", st.removal_s},
+                                  {"improve", st.improve_s}}}}}};
     if (cracked) summary["crack_length_m"] = cracked->crack_length();
     write_json_output(out, "-o", (dir / (name + ".json")).string(), summary);
     totals.t_write += since(tw);

@@ -145,6 +145,10 @@ bool CambialGrowth::step() {
   stats_.moved += st.moved;
   stats_.shortened += st.shortened;
   stats_.clamped += st.clamped;
+  stats_.carry_s += st.carry_s;
+  stats_.moves_s += st.moves_s;
+  stats_.unblock_s += st.unblock_s;
+  stats_.smooth_s += st.smooth_s;
   // Sec. 4.3: reversed growth is the negated speed plus a small curvature term, which keeps a
   // shrinking surface from folding where it is concave.
   // Forwards, the same term (weaker) lets a vertex that a blocked move left behind catch up
@@ -156,6 +160,7 @@ bool CambialGrowth::step() {
     smooth_interface_curvature(complex_, *adjacency_, faces, 0.1);
   else if (settings_.curvature > 0)
     smooth_interface_curvature(complex_, *adjacency_, faces, settings_.curvature, true, &owed_);  // its lift repays what is owed
+  stats_.curvature_s += since(t_contact);
   // Sec. 4.5: vertices that came within half the step's thickening of an obstacle or of
   // another part of the front stop there for good (a crease wound where fronts meet).
   const double step_thickening = std::abs(settings_.function.cumulative(age_at(step_ + 1)) -
@@ -182,6 +187,10 @@ bool CambialGrowth::step() {
   stats_.interface_flips += repair.interface_flips;
   stats_.flips += repair.flips23 + repair.flips32;
   stats_.repair_s += since(t_repair);
+  stats_.flips_s += repair.flips_s;
+  stats_.band_s += repair.band_s;
+  stats_.removal_s += repair.removal_s;
+  stats_.improve_s += repair.improve_s;
   // Most moves blocked: the volume around the interface has worn out; TetGen makes it anew
   // (the interface and its points unchanged).
   const long tried = st.moved + st.shortened + st.clamped;

@@ -55,6 +55,10 @@ struct CambialGrowthStats {
   // Where steps_s goes: the interface motion (advance_interface), the curvature term and
   // contact, the local repair; with remesh_s, these add up to steps_s but for book-keeping.
   double motion_s = 0, contact_s = 0, repair_s = 0;
+  // Their parts, all steps (interface_motion.h, complex_repair.h); contact_s's curvature term.
+  double carry_s = 0, moves_s = 0, unblock_s = 0, smooth_s = 0;
+  double flips_s = 0, band_s = 0, removal_s = 0, improve_s = 0;
+  double curvature_s = 0;
 };
 
 // The interface as a compact triangle mesh (outwards), with its UVs when the input had them,

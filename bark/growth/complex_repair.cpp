@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "bark/growth/free_vertex_removal.h"
 #include "bark/growth/interface_coarsening.h"
@@ -27,10 +28,19 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_leng
 RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
                                double min_length, double max_length, const RepairSettings& settings) {
   RepairStats st;
+  using Clock = std::chrono::steady_clock;
+  auto clock = Clock::now();
+  auto lap = [&clock] {
+    const auto now = Clock::now();
+    const double s = std::chrono::duration<double>(now - clock).count();
+    clock = now;
+    return s;
+  };
   // The flips first, on the faces as the motion left them: an edge a flip removed is no longer
   // found by the splits and collapses below (they check each edge against the tetrahedra), and
   // the flip's new edge is inside the band's upper bound.
   if (settings.interface_flips) st.interface_flips = flip_interface_edges(c, adj, faces, max_length, settings.flips);
+  st.flips_s = lap();
   std::vector<std::array<uint32_t, 2>> edges;  // the interface's edges after the splits
   st.splits = split_long_interface_edges(c, adj, faces, max_length, edges);
   long stretched = 0;
@@ -38,6 +48,7 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   // Short edges may collapse into edges past the upper bound (interface_coarsening.h): those
   // are split again, so every interface edge ends the step inside the band.
   if (stretched > 0) st.splits += split_long_interface_edges(c, adj, interface_faces(c, adj), max_length);
+  st.band_s = lap();
   const std::vector<uint32_t> interface = marked(c.on_interface, 1);
   // The free vertices the front pressed against the interface (a poor tetrahedron around them):
   // removed, in index order, where that raises their worst quality. Their worst qualities
@@ -70,7 +81,9 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
         for (uint32_t x : star_points) changed[x] = 1;
     }
   }
+  st.removal_s = lap();
   const FlipStats fs = improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length, settings.quality_passes);
+  st.improve_s = lap();
   st.flips23 = fs.flips23;
   st.flips32 = fs.flips32 + fs.edge_removals;
   st.relocated = fs.relocated;

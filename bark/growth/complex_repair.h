@@ -32,6 +32,9 @@ struct RepairStats {
   long relocated = 0;
   long removed = 0;      // free vertices collapsed away (free_vertex_removal.h)
   long free_splits = 0;  // splits of long non-interface edges of poor outside tetrahedra
+  // Where the time goes (s): interface flips, splits and collapses into the band, removals of
+  // pressed free vertices, improving poor tetrahedra.
+  double flips_s = 0, band_s = 0, removal_s = 0, improve_s = 0;
 };
 
 struct RepairSettings {

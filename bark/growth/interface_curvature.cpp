@@ -34,6 +34,7 @@ long smooth_interface_curvature(TetComplex& c, const TetAdjacency& adj, const st
     if (count[v] == 0 || c.frozen[v]) continue;
     const Eigen::Vector3d start = c.points[v];
     Eigen::Vector3d delta = target[v] - start;
+    if (delta.isZero(0)) continue;  // only outwards, and the surface is convex here: no move, nothing to test
     for (int h = 0; h < 4; ++h, delta *= 0.5) {
       c.points[v] = start + delta;
       bool ok = true;

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "bark/growth/point_marks.h"
@@ -13,6 +14,15 @@
 namespace phellem::bark {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+// The seconds since t, and t moved on to now.
+double lap(Clock::time_point& t) {
+  const auto now = Clock::now();
+  const double s = std::chrono::duration<double>(now - t).count();
+  t = now;
+  return s;
+}
 
 constexpr int kMaxHalvings = 6;
 constexpr int kRounds = 4;  // move, retessellate what blocks, move on
@@ -222,7 +232,9 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     for (size_t i = 0; i < movers.size(); ++i) s[i] = c.points[movers[i]];
     return s;
   }();
+  auto clock = Clock::now();
   carry_free_vertices(c, adj, movers, target, active);
+  st.carry_s = lap(clock);
   // Vertices move one at a time in index order, each checked against its own tetrahedra:
   // deterministic, and a vertex never validates against a neighbour's half-made move. Those
   // that stopped short get the tetrahedra in their way retessellated and try again.
@@ -234,11 +246,13 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     std::vector<size_t> blocked;
     for (size_t i : pending)
       if (move_towards(c, adj, movers[i], target[i]) < 1) blocked.push_back(i);
+    st.moves_s += lap(clock);
     if (round + 1 == kRounds) break;
     std::vector<size_t> retry;
     for (size_t i : blocked)
       if (unblock_vertex(c, adj, movers[i], target[i], fs)) retry.push_back(i);
     pending = std::move(retry);
+    st.unblock_s += lap(clock);
   }
   for (size_t i = 0; i < movers.size(); ++i) {
     if (!active[i]) continue;
@@ -270,7 +284,9 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
   st.relocated = fs.relocated;
   st.removed = fs.removed;
 
+  lap(clock);
   st.smoothed = smooth_near_interface(c, adj);
+  st.smooth_s = lap(clock);
   return st;
 }
 

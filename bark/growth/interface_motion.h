@@ -30,6 +30,8 @@ struct InterfaceStepStats {
   long flips = 0;       // 2-3 and 3-2 flips made to unblock moves
   long relocated = 0;   // free vertices moved to unblock moves
   long removed = 0;     // free vertices collapsed away to unblock moves
+  // Where the time goes (s): carrying the free rings, the moves, unblocking them, smoothing.
+  double carry_s = 0, moves_s = 0, unblock_s = 0, smooth_s = 0;
 };
 
 // The area-weighted outward normals of the interface faces at each point (0 elsewhere), from
