@@ -97,6 +97,7 @@ GrowthRunTotals simulate_growth_objects(const cli::Options& o, const SceneDesc& 
                               {"collapses", st.collapses},
                               {"flips", st.flips},
                               {"interface_flips", st.interface_flips},
+                              {"upkeep_steps", st.upkeep_steps},
                               {"frozen", {{"obstacle", st.frozen_obstacle}, {"contact", st.frozen_contact}}},
                               {"rings", run.rings.size()},
                               {"remeshes", {{"made", st.remeshes}, {"refused", st.remesh_refused}}},

@@ -172,6 +172,8 @@ GrowthDesc parse_growth(JsonObject o, const std::string& base_dir) {
       s.tet.time_limit = in_range(*w, 1, 86400, "time_limit must lie in [1, 86400] (seconds TetGen may take for one tetrahedralization)");
     if (auto w = t.get("remesh_blocked"))
       s.remesh_blocked = in_range(*w, 0, 1, "remesh_blocked must lie in [0, 1] (the share of blocked moves that has the volume made again; 0: never)");
+    if (auto w = t.get("upkeep_reach"))
+      s.upkeep_reach = in_range(*w, 0, 4, "upkeep_reach must lie in [0, 4] (how far ahead of the front its free rings are carried, in the band's lower bound; 0: every step)");
     t.finish();
   }
   if (auto v = o.get("reverse")) s.reverse = v->boolean();

@@ -138,8 +138,10 @@ bool CambialGrowth::step() {
   // the faces), in tet order: for the motion, the curvature term, contact and the repair.
   const std::vector<std::array<uint32_t, 3>> step_faces = interface_faces(complex_, *adjacency_);
   const std::vector<Eigen::Vector3d> before = complex_.points;  // how far each point moves: for the flips
-  const InterfaceStepStats st =
-      advance_interface(complex_, *adjacency_, step_faces, settings_.function, age_at(step_), age_at(step_ + 1), &owed_);
+  upkeep_.reach = settings_.upkeep_reach * settings_.edge_min;
+  const InterfaceStepStats st = advance_interface(complex_, *adjacency_, step_faces, settings_.function, age_at(step_),
+                                                  age_at(step_ + 1), &owed_, &upkeep_);
+  stats_.upkeep_steps += st.upkeep;
   const auto t_contact = Clock::now();
   stats_.motion_s += std::chrono::duration<double>(t_contact - t0).count();
   stats_.moved += st.moved;
@@ -180,6 +182,7 @@ bool CambialGrowth::step() {
   RepairSettings repair_settings;
   (settings_.reverse ? repair_settings.flips.max_outward : repair_settings.flips.max_inward) = 0;
   repair_settings.flips.moved = &moved;
+  repair_settings.upkeep = st.upkeep;
   const RepairStats repair =
       growth_repair_step(complex_, *adjacency_, step_faces, settings_.edge_min, settings_.edge_max, repair_settings);
   stats_.splits += repair.splits;
@@ -208,6 +211,7 @@ bool CambialGrowth::step() {
     if (retetrahedralize(complex_, obstacles_, tet, file_, where_)) {
       adjacency_.emplace(complex_);
       obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);
+      upkeep_.steps_left = 0;  // the room carried ahead went with the old volume
       ++stats_.remeshes;
     } else {
       ++stats_.remesh_refused;

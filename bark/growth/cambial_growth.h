@@ -21,6 +21,7 @@
 #include "bark/geometry/tri_mesh.h"
 #include "bark/growth/growth_cracks.h"
 #include "bark/growth/growth_rings.h"
+#include "bark/growth/interface_motion.h"
 #include "bark/growth/tet_adjacency.h"
 #include "bark/growth/tet_complex.h"
 #include "bark/growth/weibull_growth.h"
@@ -40,6 +41,12 @@ struct CambialGrowthSettings {
   // clamped, the volume is tetrahedralized again around the interface (volume_remesh.h; 0:
   // never, the local repair alone), at most once per edge_max of thickening.
   double remesh_blocked = 0.02;
+  // The volume's upkeep (VolumeUpkeep in interface_motion.h): the free rings in front of the
+  // interface are carried at most this share of the band's lower bound ahead of it, once for
+  // as many steps as that covers (0: every step, one step ahead). Faster (the tree close-up
+  // 2× at 0.6), but the surface slides more: a sphere's UV error grows past the bound of
+  // CambialGrowth.UvsFollowTheSurfaceAndConvergeWithRefinement, so it is off by default.
+  double upkeep_reach = 0;
 };
 
 struct CambialGrowthStats {
@@ -59,6 +66,7 @@ struct CambialGrowthStats {
   double carry_s = 0, moves_s = 0, unblock_s = 0, smooth_s = 0;
   double flips_s = 0, band_s = 0, removal_s = 0, improve_s = 0;
   double curvature_s = 0;
+  long upkeep_steps = 0;  // steps that carried and smoothed the free rings (VolumeUpkeep)
 };
 
 // The interface as a compact triangle mesh (outwards), with its UVs when the input had them,
@@ -116,6 +124,7 @@ class CambialGrowth {
   std::vector<GrowthRing> rings_;
   CambialGrowthStats stats_;
   int step_ = 0;
+  VolumeUpkeep upkeep_;
   double grown_since_remesh_ = 0;  // m: the most thickening since the volume was last made
 };
 

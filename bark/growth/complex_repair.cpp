@@ -55,7 +55,7 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   // first, in parallel (a pure read); a removal changes only the tetrahedra around the removed
   // vertex, so only its neighbours' are taken again.
   FlipStats removal;
-  {
+  if (settings.upkeep) {
     std::vector<uint8_t> near(c.points.size(), 0);
     mark_around(c, adj, interface, near, 1, [&](uint32_t w) { return !c.on_interface[w] && !c.on_box[w] && !c.frozen[w]; });
     std::vector<uint32_t> candidates;
@@ -82,7 +82,10 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
     }
   }
   st.removal_s = lap();
-  const FlipStats fs = improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length, settings.quality_passes);
+  const FlipStats fs =
+      settings.upkeep ? improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length,
+                                          settings.quality_passes)
+                      : FlipStats{};
   st.improve_s = lap();
   st.flips23 = fs.flips23;
   st.flips32 = fs.flips32 + fs.edge_removals;

@@ -50,6 +50,9 @@ struct RepairSettings {
   // a flip may move the surface against the growth).
   bool interface_flips = true;
   InterfaceFlipSettings flips;
+  // The volume's upkeep: removing pressed free vertices and improving poor tetrahedra (off on
+  // the steps between two of the motion's upkeep steps, VolumeUpkeep).
+  bool upkeep = true;
 };
 
 // Band: min_length < max_length / 2 keeps a split edge's halves above the lower bound.

@@ -189,7 +189,8 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const Gro
 }
 
 InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
-                                     const GrowthFunction& growth, double t0, double t1, std::vector<double>* owed) {
+                                     const GrowthFunction& growth, double t0, double t1, std::vector<double>* owed,
+                                     VolumeUpkeep* upkeep) {
   if (owed) owed->resize(c.points.size(), 0.0);
   InterfaceStepStats st;
   const std::vector<Eigen::Vector3d> normals = interface_normals(c, faces);
@@ -233,7 +234,26 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     return s;
   }();
   auto clock = Clock::now();
-  carry_free_vertices(c, adj, movers, target, active);
+  // How many steps this carry covers: as many of this step's thickening as fit in the reach
+  // (the catch-up of owed moves left out: it is at most as much again, on few vertices).
+  int ahead = 1;
+  if (upkeep && upkeep->steps_left > 0) {
+    --upkeep->steps_left;
+    st.upkeep = false;
+  } else if (upkeep) {
+    double largest = 0;
+    for (size_t i = 0; i < movers.size(); ++i)
+      if (active[i]) largest = std::max(largest, std::abs(thickening[i]));
+    if (largest > 0 && upkeep->reach > largest)
+      ahead = int(std::min<double>(VolumeUpkeep::kMaxSteps, std::floor(upkeep->reach / largest)));
+    upkeep->steps_left = ahead - 1;
+  }
+  if (st.upkeep) {
+    std::vector<Eigen::Vector3d> carried = target;
+    if (ahead > 1)
+      for (size_t i = 0; i < movers.size(); ++i) carried[i] = c.points[movers[i]] + ahead * (target[i] - c.points[movers[i]]);
+    carry_free_vertices(c, adj, movers, carried, active);
+  }
   st.carry_s = lap(clock);
   // Vertices move one at a time in index order, each checked against its own tetrahedra:
   // deterministic, and a vertex never validates against a neighbour's half-made move. Those
@@ -285,7 +305,7 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
   st.removed = fs.removed;
 
   lap(clock);
-  st.smoothed = smooth_near_interface(c, adj);
+  if (st.upkeep) st.smoothed = smooth_near_interface(c, adj);
   st.smooth_s = lap(clock);
   return st;
 }

@@ -30,6 +30,7 @@ struct InterfaceStepStats {
   long flips = 0;       // 2-3 and 3-2 flips made to unblock moves
   long relocated = 0;   // free vertices moved to unblock moves
   long removed = 0;     // free vertices collapsed away to unblock moves
+  bool upkeep = true;   // the free rings were carried and smoothed this step (VolumeUpkeep)
   // Where the time goes (s): carrying the free rings, the moves, unblocking them, smoothing.
   double carry_s = 0, moves_s = 0, unblock_s = 0, smooth_s = 0;
 };
@@ -51,7 +52,19 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const Gro
 // by at most its own step's thickening on each later step: a move blocked for a while by the
 // mesh, not by an obstacle, leaves no lasting pit, and the surface converges to the offset the
 // growth function integrates to.
+//
+// With `upkeep`, the upkeep of the volume in front of the interface (carrying its free rings
+// ahead of it, smoothing them) runs once for several steps instead of every step: it carries
+// the rings as far ahead as that many steps of this one's thickening, as many as fit within
+// upkeep->reach (at least one, at most VolumeUpkeep::kMaxSteps), and the steps in between only
+// move the interface into the room made. InterfaceStepStats::upkeep says which steps ran it.
+struct VolumeUpkeep {
+  static constexpr int kMaxSteps = 8;
+  double reach = 0;    // m: how far ahead of the front a carry may go (0: one step, every step)
+  int steps_left = 0;  // steps the last carry still covers
+};
 InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
-                                     const GrowthFunction& growth, double t0, double t1, std::vector<double>* owed = nullptr);
+                                     const GrowthFunction& growth, double t0, double t1, std::vector<double>* owed = nullptr,
+                                     VolumeUpkeep* upkeep = nullptr);
 
 }  // namespace phellem::bark

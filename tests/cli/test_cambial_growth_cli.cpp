@@ -49,6 +49,7 @@ TEST(CambialGrowthCli, BadGrowthBlocksAreRefusedAtTheirJsonPath) {
       {R"({"speed_map": {"attribute": "COLOR_0"}})", "log", "", "/objects/0/growth/speed_map/attribute", "procedural mesh has none"},
       {R"({"texture_cells": 1})", "log", "", "/objects/0/growth/texture_cells", ""},
       {R"({"tetrahedra": {"remesh_blocked": 1.5}})", "log", "", "/objects/0/growth/tetrahedra/remesh_blocked", "[0, 1]"},
+      {R"({"tetrahedra": {"upkeep_reach": -0.5}})", "log", "", "/objects/0/growth/tetrahedra/upkeep_reach", "[0, 4]"},
       {R"({"tetrahedra": {"time_limit": 0}})", "log", "", "/objects/0/growth/tetrahedra/time_limit", "[1, 86400]"},
       {R"({"steps": 2, "obstacles": ["s"]})", "log", R"(, {"type": "sphere", "name": "s", "center": [0.1, 0.15, 0], "radius": 0.05})",
        "/objects/0/growth/obstacles/0", "intersects"},

@@ -133,6 +133,43 @@ TEST(InterfaceMotion, ABlockedMoveOwesItsRestAndCatchesUpAtMostAtItsOwnRate) {
   EXPECT_LE(most, 10 * far.thickening(1.5, 2.0, Vec3f::Zero(), Vec3f::UnitX()) + 1e-12) << "at most ten steps' worth";
 }
 
+TEST(InterfaceMotion, TheUpkeepRunsOnceForAsManyStepsAsFitInItsReachAndTheSphereStillGrowsTrue) {
+  const double r0 = 0.5;
+  TetComplex c = tetrahedralize_surface(icosphere(3, r0), TetSettings{}, "s.json", "/objects/0");
+  TetAdjacency adj(c);
+  const GrowthFunction g = growth_of(1.0);
+  const double dt = 0.01;
+  const double d = g.cumulative(dt);  // the first step's thickening; later ones are smaller
+  // 3.5 steps' reach: the first carry covers 3 steps (it and the next two), the fourth step's
+  // thickening is e^−0.03 of the first, so floor(3.5 e^0.03) = 3 again.
+  VolumeUpkeep upkeep;
+  upkeep.reach = 3.5 * d;
+  const int steps = 8;
+  const bool expected[steps] = {true, false, false, true, false, false, true, false};
+  for (int k = 0; k < steps; ++k) {
+    const InterfaceStepStats st = advance_interface(c, adj, interface_faces(c, adj), g, dt * k, dt * (k + 1), nullptr, &upkeep);
+    EXPECT_EQ(st.upkeep, expected[k]) << "step " << k;
+    if (st.upkeep) {
+      EXPECT_GT(st.smoothed, 0) << "step " << k;
+    } else {
+      EXPECT_EQ(st.smoothed, 0) << "step " << k;
+    }
+    ASSERT_EQ(c.first_inverted(), -1) << "step " << k;
+    EXPECT_EQ(st.clamped + st.shortened, 0) << "step " << k;
+  }
+  // Every interface vertex at R₀ + ∫s dt, as with the upkeep every step.
+  const double grown = g.cumulative(dt * steps);
+  double worst = 0;
+  for (size_t i = 0; i < c.points.size(); ++i)
+    if (c.on_interface[i]) worst = std::max(worst, std::abs(c.points[i].norm() - (r0 + grown)));
+  EXPECT_LT(worst, 1e-3);
+  // A reach shorter than a step's thickening: the upkeep every step.
+  VolumeUpkeep short_reach;
+  short_reach.reach = 0.5 * d;
+  for (int k = steps; k < steps + 3; ++k)
+    EXPECT_TRUE(advance_interface(c, adj, interface_faces(c, adj), g, dt * k, dt * (k + 1), nullptr, &short_reach).upkeep);
+}
+
 TEST(InterfaceRefinement, SplitsKeepTheGrowingSphereFineClosedAndPositive) {
   const double r0 = 0.3;
   TetComplex c = tetrahedralize_surface(icosphere(2, r0), TetSettings{}, "s.json", "/objects/0");
