@@ -44,7 +44,7 @@ struct CambialGrowthSettings {
   // The volume's upkeep (VolumeUpkeep in interface_motion.h): the free rings in front of the
   // interface are carried at most this share of the band's lower bound ahead of it, once for
   // as many steps as that covers (0: every step, one step ahead). Faster (the tree close-up
-  // 2× at 0.6), but the surface slides more: a sphere's UV error grows past the bound of
+  // 2× at 0.6), but a sphere's worst UV error grows past the bound of
   // CambialGrowth.UvsFollowTheSurfaceAndConvergeWithRefinement, so it is off by default.
   double upkeep_reach = 0;
 };
