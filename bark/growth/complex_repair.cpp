@@ -4,7 +4,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "bark/growth/free_vertex_removal.h"
 #include "bark/growth/interface_coarsening.h"
@@ -12,6 +11,7 @@
 #include "bark/growth/interface_refinement.h"
 #include "bark/growth/point_marks.h"
 #include "bark/growth/tet_flips.h"
+#include "util/stopwatch.h"
 
 namespace phellem::bark {
 
@@ -28,19 +28,12 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, double min_leng
 RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 3>>& faces,
                                double min_length, double max_length, const RepairSettings& settings) {
   RepairStats st;
-  using Clock = std::chrono::steady_clock;
-  auto clock = Clock::now();
-  auto lap = [&clock] {
-    const auto now = Clock::now();
-    const double s = std::chrono::duration<double>(now - clock).count();
-    clock = now;
-    return s;
-  };
+  Stopwatch clock;
   // The flips first, on the faces as the motion left them: an edge a flip removed is no longer
   // found by the splits and collapses below (they check each edge against the tetrahedra), and
   // the flip's new edge is inside the band's upper bound.
   if (settings.interface_flips) st.interface_flips = flip_interface_edges(c, adj, faces, max_length, settings.flips);
-  st.flips_s = lap();
+  st.flips_s = clock.lap();
   std::vector<std::array<uint32_t, 2>> edges;  // the interface's edges after the splits
   st.splits = split_long_interface_edges(c, adj, faces, max_length, edges);
   long stretched = 0;
@@ -48,14 +41,15 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   // Short edges may collapse into edges past the upper bound (interface_coarsening.h): those
   // are split again, so every interface edge ends the step inside the band.
   if (stretched > 0) st.splits += split_long_interface_edges(c, adj, interface_faces(c, adj), max_length);
-  st.band_s = lap();
-  const std::vector<uint32_t> interface = marked(c.on_interface, 1);
-  // The free vertices the front pressed against the interface (a poor tetrahedron around them):
+  st.band_s = clock.lap();
+  // The volume's upkeep, on the steps that run it (VolumeUpkeep). The free vertices the front
+  // pressed against the interface (a poor tetrahedron around them):
   // removed, in index order, where that raises their worst quality. Their worst qualities
   // first, in parallel (a pure read); a removal changes only the tetrahedra around the removed
   // vertex, so only its neighbours' are taken again.
-  FlipStats removal;
+  FlipStats removal, fs;
   if (settings.upkeep) {
+    const std::vector<uint32_t> interface = marked(c.on_interface, 1);
     std::vector<uint8_t> near(c.points.size(), 0);
     mark_around(c, adj, interface, near, 1, [&](uint32_t w) { return !c.on_interface[w] && !c.on_box[w] && !c.frozen[w]; });
     std::vector<uint32_t> candidates;
@@ -80,13 +74,11 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
       if (remove_free_vertex(c, adj, w, Probe{}, removal))
         for (uint32_t x : star_points) changed[x] = 1;
     }
+    st.removal_s = clock.lap();
+    fs = improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length,
+                           settings.quality_passes);
+    st.improve_s = clock.lap();
   }
-  st.removal_s = lap();
-  const FlipStats fs =
-      settings.upkeep ? improve_tets_near(c, adj, interface, settings.quality_threshold, settings.free_split_length * max_length,
-                                          settings.quality_passes)
-                      : FlipStats{};
-  st.improve_s = lap();
   st.flips23 = fs.flips23;
   st.flips32 = fs.flips32 + fs.edge_removals;
   st.relocated = fs.relocated;

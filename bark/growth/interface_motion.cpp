@@ -4,25 +4,16 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "bark/growth/point_marks.h"
 #include "bark/growth/tet_flips.h"
 #include "bark/growth/texture_transport.h"
+#include "util/stopwatch.h"
 
 namespace phellem::bark {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-// The seconds since t, and t moved on to now.
-double lap(Clock::time_point& t) {
-  const auto now = Clock::now();
-  const double s = std::chrono::duration<double>(now - t).count();
-  t = now;
-  return s;
-}
 
 constexpr int kMaxHalvings = 6;
 constexpr int kRounds = 4;  // move, retessellate what blocks, move on
@@ -233,7 +224,7 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     for (size_t i = 0; i < movers.size(); ++i) s[i] = c.points[movers[i]];
     return s;
   }();
-  auto clock = Clock::now();
+  Stopwatch clock;
   // How many steps this carry covers: as many of this step's thickening as fit in the reach
   // (the catch-up of owed moves left out: it is at most as much again, on few vertices).
   int ahead = 1;
@@ -248,13 +239,14 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
       ahead = int(std::min<double>(VolumeUpkeep::kMaxSteps, std::floor(upkeep->reach / largest)));
     upkeep->steps_left = ahead - 1;
   }
-  if (st.upkeep) {
-    std::vector<Eigen::Vector3d> carried = target;
-    if (ahead > 1)
-      for (size_t i = 0; i < movers.size(); ++i) carried[i] = c.points[movers[i]] + ahead * (target[i] - c.points[movers[i]]);
+  if (st.upkeep && ahead == 1) {
+    carry_free_vertices(c, adj, movers, target, active);
+  } else if (st.upkeep) {
+    std::vector<Eigen::Vector3d> carried(movers.size());
+    for (size_t i = 0; i < movers.size(); ++i) carried[i] = c.points[movers[i]] + ahead * (target[i] - c.points[movers[i]]);
     carry_free_vertices(c, adj, movers, carried, active);
   }
-  st.carry_s = lap(clock);
+  st.carry_s = clock.lap();
   // Vertices move one at a time in index order, each checked against its own tetrahedra:
   // deterministic, and a vertex never validates against a neighbour's half-made move. Those
   // that stopped short get the tetrahedra in their way retessellated and try again.
@@ -266,13 +258,13 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
     std::vector<size_t> blocked;
     for (size_t i : pending)
       if (move_towards(c, adj, movers[i], target[i]) < 1) blocked.push_back(i);
-    st.moves_s += lap(clock);
+    st.moves_s += clock.lap();
     if (round + 1 == kRounds) break;
     std::vector<size_t> retry;
     for (size_t i : blocked)
       if (unblock_vertex(c, adj, movers[i], target[i], fs)) retry.push_back(i);
     pending = std::move(retry);
-    st.unblock_s += lap(clock);
+    st.unblock_s += clock.lap();
   }
   for (size_t i = 0; i < movers.size(); ++i) {
     if (!active[i]) continue;
@@ -304,9 +296,9 @@ InterfaceStepStats advance_interface(TetComplex& c, TetAdjacency& adj, const std
   st.relocated = fs.relocated;
   st.removed = fs.removed;
 
-  lap(clock);
+  clock.lap();
   if (st.upkeep) st.smoothed = smooth_near_interface(c, adj);
-  st.smooth_s = lap(clock);
+  st.smooth_s = clock.lap();
   return st;
 }
 
