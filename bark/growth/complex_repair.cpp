@@ -51,7 +51,8 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   if (settings.upkeep) {
     const std::vector<uint32_t> interface = marked(c.on_interface, 1);
     std::vector<uint8_t> near(c.points.size(), 0);
-    mark_around(c, adj, interface, near, 1, [&](uint32_t w) { return !c.on_interface[w] && !c.on_box[w] && !c.frozen[w]; });
+    mark_next_to(c, near, 1, [&](uint32_t p) { return c.on_interface[p] != 0; },
+                 [&](uint32_t w) { return !c.on_interface[w] && !c.on_box[w] && !c.frozen[w]; });
     std::vector<uint32_t> candidates;
     for (uint32_t w = 0; w < near.size(); ++w)
       if (near[w] && !adj.unused(w)) candidates.push_back(w);

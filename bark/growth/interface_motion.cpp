@@ -71,12 +71,10 @@ void carry_free_vertices(TetComplex& c, const TetAdjacency& adj, const std::vect
   const size_t n = c.points.size();
   std::vector<Eigen::Vector3d> shift(n, Eigen::Vector3d::Zero());
   std::vector<uint8_t> ring(n, 0);  // 3: a moving interface vertex, 1, 2: its free rings
-  std::vector<uint32_t> moving;
   for (size_t i = 0; i < movers.size(); ++i)
     if (active[i]) {
       shift[movers[i]] = target[i] - c.points[movers[i]];
       ring[movers[i]] = 3;
-      moving.push_back(movers[i]);
     }
   // Each free vertex of ring r + 1 takes the mean of its ring-r neighbours' shifts (ring 0: the
   // moving vertices), each counted once per tetrahedron the two share, gathered in parallel
@@ -84,8 +82,7 @@ void carry_free_vertices(TetComplex& c, const TetAdjacency& adj, const std::vect
   std::vector<uint32_t> rings[2];
   for (int r = 0; r < 2; ++r) {
     const uint8_t from = r == 0 ? 3 : 1;
-    mark_around(c, adj, r == 0 ? std::span<const uint32_t>(moving) : std::span<const uint32_t>(rings[0]), ring,
-                uint8_t(r + 1), [&](uint32_t w) { return free_point(c, w); });
+    mark_next_to(c, ring, uint8_t(r + 1), [&](uint32_t p) { return ring[p] == from; }, [&](uint32_t w) { return free_point(c, w); });
     rings[r] = marked(ring, uint8_t(r + 1));
     const double factor = r == 0 ? kCarry[0] : kCarry[1] / kCarry[0];
     tbb::parallel_for(tbb::blocked_range<size_t>(0, rings[r].size(), 256), [&](const tbb::blocked_range<size_t>& range) {
@@ -114,8 +111,8 @@ long smooth_near_interface(TetComplex& c, const TetAdjacency& adj) {
   const size_t n = c.points.size();
   std::vector<uint8_t> ring(n, 0);
   auto off_interface = [&](uint32_t w) { return !c.on_interface[w]; };
-  mark_around(c, adj, marked(c.on_interface, 1), ring, 1, off_interface);
-  mark_around(c, adj, marked(ring, 1), ring, 2, off_interface);
+  mark_next_to(c, ring, 1, [&](uint32_t p) { return c.on_interface[p] != 0; }, off_interface);
+  mark_next_to(c, ring, 2, [&](uint32_t p) { return ring[p] == 1; }, off_interface);
   std::vector<uint32_t> movable;
   for (uint32_t v = 0; v < n; ++v)
     if (ring[v] && !c.on_box[v] && !c.frozen[v] && !adj.around(v).empty()) movable.push_back(v);
