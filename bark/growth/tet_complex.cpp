@@ -313,6 +313,7 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
     for (int f = 0; f < 4; ++f) {
       std::array<uint32_t, 3> key{c.tets[t][size_t(kFace[f][0])], c.tets[t][size_t(kFace[f][1])], c.tets[t][size_t(kFace[f][2])]};
       std::sort(key.begin(), key.end());
+      if (key[0] < n || key[2] >= n_all) continue;  // not all three an obstacle's points: no obstacle triangle
       const auto it = owner.find(key);
       if (it == owner.end() || it->second.first < 0) continue;
       const auto& [a, b, d] = it->second.second;

@@ -102,6 +102,7 @@ bool retetrahedralize(TetComplex& c, const std::vector<GrowthObstacle>& obstacle
     auto side = [&](uint32_t t, int j) {
       const auto& T = out.tets[t];
       const auto f = rotated({T[size_t(kTetFace[j][0])], T[size_t(kTetFace[j][1])], T[size_t(kTetFace[j][2])]});
+      if (!out.on_interface[f[0]] || !out.on_interface[f[1]] || !out.on_interface[f[2]]) return 0;  // (the kept points only)
       if (std::binary_search(oriented.begin(), oriented.end(), f)) return 1;
       if (std::binary_search(oriented.begin(), oriented.end(), std::array<uint32_t, 3>{f[0], f[2], f[1]})) return -1;
       return 0;
