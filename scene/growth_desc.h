@@ -22,7 +22,7 @@
 //     "edge_length": [0.004, 0.01],    // m: the interface's edge band (default: from the mesh)
 //     "tetrahedra": {"quality": 1.5, "max_volume": 0, "padding": 0.5, "lattice": 0.2,  // lattice: TetSettings
 //                    "remesh_blocked": 0.02,   // CambialGrowthSettings: when the volume is made again
-//                    "upkeep_reach": 0},       // ... how far ahead the volume's upkeep carries (0: every step)
+//                    "upkeep_reach": 0.6},     // ... how far ahead the volume's upkeep carries (0: every step)
 //     "reverse": false                 // sec. 4.3: shrink the mesh back to its age_start
 //   }
 #pragma once

@@ -251,12 +251,14 @@ TEST(ComplexRepair, ASphereGrown16TimesStaysOnItsRadiusWithEveryStepValid) {
   const GrowthRun after = grow_sphere(true, true);
   std::printf("lag with splits only: %.4f m (%ld shortened, %ld clamped); with the repair: %.4f m (%ld, %ld); band max %.4f m, at most %ld short edges\n",
               before.lag, before.shortened, before.clamped, after.lag, after.shortened, after.clamped, after.band_max, after.short_edges);
-  // Within one edge (the requirement; asserted with some room below it); measured 0.048 m =
-  // 0.59 of the band's upper bound, where the splits alone leave 0.119 m (0.155 m before the
-  // DSC repair existed). The aim, a quarter, is not reached yet: the lag gathers where the
-  // sphere nears the box's faces, whose coarse needles to the box corners no flip removes.
-  EXPECT_LT(after.lag, 0.75 * after.band_max) << after.short_edges << " short edges at most";
-  EXPECT_LT(after.lag, 0.5 * before.lag);
+  // Within one edge (the requirement), and within the aim of a quarter of one: measured
+  // 0.0112 m = 0.14 of the band's upper bound. Until the motion retried its blocked moves once
+  // every vertex had moved (interface_motion.cpp) it was 0.048 m, and the splits alone left
+  // 0.119 m, so this test asserted the repair halved the splits' lag; with the retry the
+  // splits alone leave 0.0102 m, and what the repair adds is a volume in front that blocks
+  // fewer moves (48 shortened against 125).
+  EXPECT_LT(after.lag, 0.25 * after.band_max) << after.short_edges << " short edges at most";
+  EXPECT_LT(after.shortened + after.clamped, before.shortened + before.clamped);
   EXPECT_NEAR(after.volume_ratio, 1.0, 0.02);
 }
 

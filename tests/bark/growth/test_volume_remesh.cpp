@@ -27,7 +27,7 @@ std::vector<std::array<uint32_t, 3>> rotated(std::vector<std::array<uint32_t, 3>
   return f;
 }
 
-// An icosphere's complex grown two steps with splits and no repair: squashed outside, new
+// An icosphere's complex grown four steps with splits and no repair: squashed outside, new
 // interface points from the splits, UVs and source vertices on every interface point.
 TetComplex grown_sphere() {
   TriMesh s = icosphere(3, 0.5);
@@ -39,7 +39,9 @@ TetComplex grown_sphere() {
   g.thickness = 1;
   double band = 0;
   for (const auto& e : interface_edges(c)) band = std::max(band, (c.points[e[0]] - c.points[e[1]]).norm());
-  for (int k = 0; k < 2; ++k) {
+  // Four steps wear the outside next to the interface (0.27 % of its tetrahedra below quality
+  // 0.1, the worst 0.037). Two did before the motion retried its blocked moves.
+  for (int k = 0; k < 4; ++k) {
     advance_interface(c, g, 0.05 * k, 0.05 * (k + 1));
     split_long_interface_edges(c, band);
   }
