@@ -26,19 +26,26 @@ python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step, Te
 echo "the same growth on a sphere of the log's area (no rims; bench/scenes/growth_sphere_closeup.json)"
 read -r g s steps v0 v1 <<<"$(run bench/scenes/growth_sphere_closeup.json)"
 python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step, TetGen set-up %.2f s' % ($v0, $v1, $steps, $g / $steps * 1e3, $s))"
-echo
-echo "vertices_start  vertices_end  steps  ms_per_step  us_per_vertex_step  setup_s"
-for n in 8000 20000 78000; do
-  python3 - "$n" "$out/scale.json" <<'PY'
+# The scaling loops: the close-up with 8000, 20000 and 78000 triangles, 20 steps, the band
+# scaled with the triangles' size. "fixed growth" keeps the close-up's first 6 years, so a finer
+# mesh moves more edge lengths a step; "growth scaled" shortens the years with the band, so
+# every mesh moves the same share of its edges a step and only the vertex count changes.
+for mode in fixed scaled; do
+  echo
+  echo "growth $mode: vertices_start  vertices_end  steps  ms_per_step  us_per_vertex_step  setup_s"
+  for n in 8000 20000 78000; do
+    python3 - "$n" "$out/scale.json" "$mode" <<'PY'
 import json, sys
-n, path = int(sys.argv[1]), sys.argv[2]
+n, path, mode = int(sys.argv[1]), sys.argv[2], sys.argv[3]
 s = json.load(open("bench/scenes/growth_tree_closeup.json"))
 o = s["objects"][0]
 o["procedural"]["triangles"] = n
 e = 0.013 * (20000 / n) ** 0.5
-o["growth"].update({"steps": 20, "years": 6, "edge_length": [0.385 * e, e]})
+years = 6 if mode == "fixed" else 6 * e / 0.013
+o["growth"].update({"steps": 20, "years": years, "edge_length": [0.385 * e, e]})
 json.dump(s, open(path, "w"))
 PY
-  read -r g s steps v0 v1 <<<"$(run "$out/scale.json")"
-  python3 -c "print('%14d  %12d  %5d  %11.1f  %18.2f  %7.2f' % ($v0, $v1, $steps, $g / $steps * 1e3, $g / $steps / (($v0 + $v1) / 2) * 1e6, $s))"
+    read -r g s steps v0 v1 <<<"$(run "$out/scale.json")"
+    python3 -c "print('%14d  %12d  %5d  %11.1f  %18.2f  %7.2f' % ($v0, $v1, $steps, $g / $steps * 1e3, $g / $steps / (($v0 + $v1) / 2) * 1e6, $s))"
+  done
 done
