@@ -3,7 +3,9 @@
 // that were shortened or clamped, and at the end the radial error of the interface on the
 // log's middle section (mean, standard deviation, worst lag and lead) and how far interface
 // normals turn from the radial direction there.
-//   build/bench/phellem_bench_growth_quality [triangles-around] [steps] [growth-ratio] [remesh-blocked]
+//   build/bench/phellem_bench_growth_quality [triangles-around] [steps] [growth-ratio] [remesh-blocked] [jitter-seed]
+// The jitter seed (default 7) draws another log of the same size: bench/run_growth_quality.sh
+// runs several and reports the worst.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,9 +22,10 @@ int main(int argc, char** argv) {
   const int steps = argc > 2 ? std::atoi(argv[2]) : 40;
   const double ratio = argc > 3 ? std::atof(argv[3]) : 2.0;
   const double remesh = argc > 4 ? std::atof(argv[4]) : CambialGrowthSettings{}.remesh_blocked;
+  const uint64_t seed = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 7;
   const double r0 = 0.08, height = 0.4;
   const int along = int(std::lround(around * height / (2 * M_PI * r0)));
-  const TriMesh log = log_mesh(r0, height, around, along, 0.2, 7);
+  const TriMesh log = log_mesh(r0, height, around, along, 0.2, seed);
   CambialGrowthSettings s;
   s.function.weibull_c = 1;
   // Nearly uniform speed: ages 0..1 of a scale of 10 (the speed drops by 10 % over the run).
