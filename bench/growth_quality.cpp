@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "bark/geometry/procedural_meshes.h"
@@ -21,7 +22,8 @@ int main(int argc, char** argv) {
   const int around = argc > 1 ? std::atoi(argv[1]) : 60;
   const int steps = argc > 2 ? std::atoi(argv[2]) : 40;
   const double ratio = argc > 3 ? std::atof(argv[3]) : 2.0;
-  const double remesh = argc > 4 ? std::atof(argv[4]) : CambialGrowthSettings{}.remesh_blocked;
+  // "-" (or nothing) for remesh-blocked: the library's default.
+  const double remesh = argc > 4 && std::string(argv[4]) != "-" ? std::atof(argv[4]) : CambialGrowthSettings{}.remesh_blocked;
   const uint64_t seed = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 7;
   const double r0 = 0.08, height = 0.4;
   const int along = int(std::lround(around * height / (2 * M_PI * r0)));

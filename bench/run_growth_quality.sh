@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 SEEDS=${SEEDS:-"1 2 3 4 5 7"}
 lines=()
 for seed in $SEEDS; do
-  line=$(./build/bench/phellem_bench_growth_quality 60 40 2 0.02 "$seed" | tail -1)
+  line=$(./build/bench/phellem_bench_growth_quality 60 40 2 - "$seed" | tail -1)
   echo "seed $seed: $line"
   lines+=("$line")
 done
