@@ -65,7 +65,7 @@ double mean_edge_length(const TriMesh& m) {
 GrowthSurface extract_interface(const TetComplex& c) {
   GrowthSurface s;
   std::map<uint32_t, uint32_t> index;
-  const auto faces = c.interface_faces();
+  const auto faces = c.boundary_faces(TetComplex::kInside, c.on_interface);
   for (const auto& f : faces)
     for (uint32_t v : f) index.emplace(v, 0);
   for (auto& [p, i] : index) {
@@ -104,7 +104,8 @@ CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObs
     for (size_t i = 0; i < first_of.size(); ++i) complex_.direction[i] = vertex_direction[size_t(first_of[i])];
   }
   adjacency_.emplace(complex_);
-  obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);  // obstacle tetrahedra never change
+  // Obstacle tetrahedra never change, and all their corners are frozen.
+  obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle, complex_.frozen);
   stats_.setup_s = since(t0);
   stats_.vertices_start = stats_.vertices_end = interface_vertex_count(complex_);
   stats_.tets_start = stats_.tets_end = complex_.tets.size();
@@ -210,7 +211,7 @@ bool CambialGrowth::step() {
     tet.time_limit = std::min(tet.time_limit, std::max(10.0, 10 * stats_.setup_s));
     if (retetrahedralize(complex_, obstacles_, tet, file_, where_)) {
       adjacency_.emplace(complex_);
-      obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle);
+      obstacle_faces_ = complex_.boundary_faces(TetComplex::kObstacle, complex_.frozen);
       upkeep_.steps_left = 0;  // the room carried ahead went with the old volume
       ++stats_.remeshes;
     } else {

@@ -37,10 +37,12 @@ RepairStats growth_repair_step(TetComplex& c, TetAdjacency& adj, const std::vect
   std::vector<std::array<uint32_t, 2>> edges;  // the interface's edges after the splits
   st.splits = split_long_interface_edges(c, adj, faces, max_length, edges);
   long stretched = 0;
-  st.collapses = collapse_short_interface_edges(c, adj, edges, min_length, max_length, &stretched);
+  std::vector<uint32_t> touched;
+  st.collapses = collapse_short_interface_edges(c, adj, edges, min_length, max_length, &stretched, &touched);
   // Short edges may collapse into edges past the upper bound (interface_coarsening.h): those
-  // are split again, so every interface edge ends the step inside the band.
-  if (stretched > 0) st.splits += split_long_interface_edges(c, adj, interface_faces(c, adj), max_length);
+  // are split again, so every interface edge ends the step inside the band. Only edges at the
+  // collapses can be long: they are found there.
+  if (stretched > 0) st.splits += split_long_interface_edges_at(c, adj, std::move(touched), max_length);
   st.band_s = clock.lap();
   // The volume's upkeep, on the steps that run it (VolumeUpkeep). The free vertices the front
   // pressed against the interface (a poor tetrahedron around them):

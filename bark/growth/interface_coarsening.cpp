@@ -239,7 +239,8 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min
 }
 
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 2>>& edges,
-                                    double min_length, double max_length, long* stretched) {
+                                    double min_length, double max_length, long* stretched,
+                                    std::vector<uint32_t>* touched) {
   long collapses = 0;
   // A collapse of a–b reads only the tetrahedra around a and b (corners, positions, flags) and
   // those sharing a face with them (labels). Collapse number n stamps n on every corner of
@@ -317,6 +318,7 @@ long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std:
         gather(a, b);
         for (uint32_t w : corners) stamp[w] = made_total;
         stamped.insert(stamped.end(), corners.begin(), corners.end());
+        if (touched) touched->insert(touched->end(), corners.begin(), corners.end());
         ++made_total;
       } else {
         failed_at[key] = made_total;

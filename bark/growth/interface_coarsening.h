@@ -35,10 +35,12 @@ long collapse_short_interface_edges(TetComplex& c, double min_length,
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, double min_length,
                                     double max_length = std::numeric_limits<double>::infinity());
 // The same from the interface's edges the caller has (each once, {a < b}, any order; e.g. from
-// split_long_interface_edges) instead of a scan of every tetrahedron for them.
+// split_long_interface_edges) instead of a scan of every tetrahedron for them. With `touched`
+// given, the corners of the tetrahedra around each collapse's ends, before and after it, are
+// appended there (repeats included): every edge a collapse made or moved has an end among them.
 long collapse_short_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vector<std::array<uint32_t, 2>>& edges,
                                     double min_length, double max_length = std::numeric_limits<double>::infinity(),
-                                    long* stretched = nullptr);
+                                    long* stretched = nullptr, std::vector<uint32_t>* touched = nullptr);
 constexpr double kStretchedCollapse = 1.5;
 
 // Collapses the interface edge a–b if the conditions above hold, the removed point merging

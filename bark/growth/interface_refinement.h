@@ -26,6 +26,11 @@ long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vec
                                 double max_length, std::vector<std::array<uint32_t, 2>>& edges,
                                 long max_splits = 1000000);
 
+// The same where every interface edge longer than `max_length` has an end among `points`
+// (after a coarsening, the points its collapses touched): found from their stars, not from a
+// scan of the whole interface, with the same result.
+long split_long_interface_edges_at(TetComplex& c, TetAdjacency& adj, std::vector<uint32_t> points, double max_length);
+
 // The interface's edges (each once, smaller index first).
 std::vector<std::array<uint32_t, 2>> interface_edges(const TetComplex& c);
 

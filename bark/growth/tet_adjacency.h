@@ -23,7 +23,26 @@ namespace phellem::bark {
 inline constexpr int kTetFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 // orient3d(a, b, c, d) > 0 by CGAL's exact (filtered) predicate.
-bool positive_tet(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, const Eigen::Vector3d& d);
+bool positive_tet_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                        const Eigen::Vector3d& d);
+// The same, decided first in double precision where Shewchuk's static error bound for orient3d
+// (its o3derrboundA) makes the sign certain, else by CGAL: the same answer, and most of the
+// millions of tests a growth step makes never leave this header.
+inline bool positive_tet(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                         const Eigen::Vector3d& d) {
+  const double bx = b.x() - a.x(), by = b.y() - a.y(), bz = b.z() - a.z();
+  const double cx = c.x() - a.x(), cy = c.y() - a.y(), cz = c.z() - a.z();
+  const double dx = d.x() - a.x(), dy = d.y() - a.y(), dz = d.z() - a.z();
+  const double cxdy = cx * dy, dxcy = dx * cy, dxby = dx * by, bxdy = bx * dy, bxcy = bx * cy, cxby = cx * by;
+  const double det = bz * (cxdy - dxcy) + cz * (dxby - bxdy) + dz * (bxcy - cxby);
+  const double permanent = (std::abs(cxdy) + std::abs(dxcy)) * std::abs(bz) + (std::abs(dxby) + std::abs(bxdy)) * std::abs(cz) +
+                           (std::abs(bxcy) + std::abs(cxby)) * std::abs(dz);
+  constexpr double kEpsilon = 0x1p-53;  // half an ulp of 1
+  constexpr double kBound = (7.0 + 56.0 * kEpsilon) * kEpsilon;
+  if (det > kBound * permanent) return true;
+  if (det < -kBound * permanent) return false;
+  return positive_tet_exact(a, b, c, d);
+}
 inline bool positive_tet(const TetComplex& c, const std::array<uint32_t, 4>& t) {
   return positive_tet(c.points[t[0]], c.points[t[1]], c.points[t[2]], c.points[t[3]]);
 }
@@ -63,6 +82,10 @@ class TetAdjacency {
   void unlink(uint32_t t, const std::array<uint32_t, 4>& corners);
 
   // The tetrahedron across the face opposite corner f of tetrahedron t, or −1 (the box).
+  // Remembers each answer as a hint for (t, f) and for the face seen from the other side; a
+  // hint is used only when it still holds the face (in a complex every face has at most two
+  // tetrahedra, so a tetrahedron other than t that holds it is the answer): the result never
+  // depends on what an operation left stale, nor on the thread that asked first.
   long across(const TetComplex& c, uint32_t t, int f) const;
   // The tetrahedra that contain both a and b.
   void edge_tets(const TetComplex& c, uint32_t a, uint32_t b, std::vector<uint32_t>& out) const;
@@ -84,7 +107,12 @@ class TetAdjacency {
   std::vector<uint32_t> offset_, flat_;  // compressed rows as built
   std::vector<std::vector<uint32_t>> own_;
   std::vector<uint8_t> owned_;
+  // 4 per tetrahedron, read and written through std::atomic_ref (callers ask in parallel);
+  // kNoHint where none is known. Grown by add_tet only (never while others read).
+  mutable std::vector<uint32_t> hint_;
+  static constexpr uint32_t kNoHint = UINT32_MAX;
   std::vector<uint32_t>& row(uint32_t p);
+  void hint(uint32_t t, int f, uint32_t u) const;
 };
 
 // Whether splitting each tetrahedron of `shared` (those around edge a–b) at the point x leaves
@@ -97,5 +125,7 @@ bool split_keeps_positive(const TetComplex& c, uint32_t a, uint32_t b, const Eig
 // TetComplex::interface_faces(), in tetrahedron order rather than sorted. Relies on
 // c.on_interface being up to date (every operation here keeps it so).
 std::vector<std::array<uint32_t, 3>> interface_faces(const TetComplex& c, const TetAdjacency& adj);
+// The faces of interface_faces(c, adj) with corner v, in its order, found from v's star.
+void interface_faces_at(const TetComplex& c, const TetAdjacency& adj, uint32_t v, std::vector<std::array<uint32_t, 3>>& out);
 
 }  // namespace phellem::bark

@@ -112,7 +112,11 @@ T* tetgen_array(size_t n) {
 
 std::vector<std::array<uint32_t, 3>> TetComplex::interface_faces() const { return boundary_faces(kInside); }
 
-std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which) const {
+namespace {
+
+// TetComplex::boundary_faces over the faces whose corners all pass `take`.
+template <class Take>
+std::vector<std::array<uint32_t, 3>> faces_between(const TetComplex& c, uint8_t which, Take take) {
   // Every face of every tetrahedron by its sorted corners, sorted: the two tetrahedra sharing a
   // face are next to each other (a sort of flat records, several times faster than a map over
   // the hundreds of thousands of tetrahedra of a grown volume).
@@ -122,28 +126,42 @@ std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which) c
     int face;
   };
   std::vector<Record> records;
-  records.reserve(4 * tets.size());
-  for (size_t t = 0; t < tets.size(); ++t)
+  for (size_t t = 0; t < c.tets.size(); ++t) {
+    const auto& T = c.tets[t];
+    const bool taken[4] = {take(T[0]), take(T[1]), take(T[2]), take(T[3])};
+    if (int(taken[0]) + int(taken[1]) + int(taken[2]) + int(taken[3]) < 3) continue;
     for (int f = 0; f < 4; ++f) {
-      std::array<uint32_t, 3> key{tets[t][size_t(kFace[f][0])], tets[t][size_t(kFace[f][1])], tets[t][size_t(kFace[f][2])]};
+      if (!taken[kFace[f][0]] || !taken[kFace[f][1]] || !taken[kFace[f][2]]) continue;
+      std::array<uint32_t, 3> key{T[size_t(kFace[f][0])], T[size_t(kFace[f][1])], T[size_t(kFace[f][2])]};
       std::sort(key.begin(), key.end());
       records.push_back({key, uint32_t(t), f});
     }
+  }
   std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) { return a.key < b.key; });
   std::vector<std::array<uint32_t, 3>> out;
   for (size_t i = 0; i + 1 < records.size(); ++i) {
     const Record &r = records[i], &q = records[i + 1];
     if (r.key != q.key) continue;
-    if ((label[r.tet] == which) != (label[q.tet] == which)) {
+    if ((c.label[r.tet] == which) != (c.label[q.tet] == which)) {
       // Oriented outwards from the tetrahedron labelled `which`.
-      const Record& in = label[r.tet] == which ? r : q;
-      const auto& T = tets[in.tet];
+      const Record& in = c.label[r.tet] == which ? r : q;
+      const auto& T = c.tets[in.tet];
       out.push_back({T[size_t(kFace[in.face][0])], T[size_t(kFace[in.face][1])], T[size_t(kFace[in.face][2])]});
     }
     ++i;  // a face has two tetrahedra at most
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+}  // namespace
+
+std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which) const {
+  return faces_between(*this, which, [](uint32_t) { return true; });
+}
+
+std::vector<std::array<uint32_t, 3>> TetComplex::boundary_faces(uint8_t which, const std::vector<uint8_t>& corner) const {
+  return faces_between(*this, which, [&](uint32_t v) { return v < corner.size() && corner[v] != 0; });
 }
 
 Eigen::Vector2d TetComplex::uv_between(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double s) {
@@ -327,8 +345,11 @@ TetComplex tetrahedralize_surface(const TriMesh& surface, const std::vector<Grow
     const auto it = region_label.find(attribute(t));
     c.label[t] = it == region_label.end() ? TetComplex::kInside : it->second;
   }
+  // Switch Y adds no point on the input triangles: the interface's corners are the surface's.
+  std::vector<uint8_t> from_surface(c.points.size(), 0);
+  std::fill(from_surface.begin(), from_surface.begin() + std::ptrdiff_t(std::min(n, c.points.size())), 1);
   c.on_interface.assign(c.points.size(), 0);
-  for (const auto& f : c.interface_faces())
+  for (const auto& f : c.boundary_faces(TetComplex::kInside, from_surface))
     for (uint32_t v : f) c.on_interface[v] = 1;
   c.on_box.assign(c.points.size(), 0);
   for (size_t i = 0; i < c.points.size(); ++i)

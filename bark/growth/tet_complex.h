@@ -81,6 +81,11 @@ struct TetComplex {
   // The faces between a tetrahedron labelled `which` and one of another label, oriented
   // outwards from `which`, sorted (boundary_faces(kObstacle): the obstacles' surfaces).
   std::vector<std::array<uint32_t, 3>> boundary_faces(uint8_t which) const;
+  // The same, looking only at faces whose three corners have a non-zero `corner` flag (one
+  // per point): the same result when every such face has them (on_interface for the
+  // interface, frozen for the obstacles), from the few tetrahedra with three such corners
+  // instead of all of them.
+  std::vector<std::array<uint32_t, 3>> boundary_faces(uint8_t which, const std::vector<uint8_t>& corner) const;
   double volume(uint8_t which) const;  // summed volume of the tetrahedra with that label
   // The first tetrahedron that is not positively oriented by the exact predicate, or −1.
   long first_inverted() const;

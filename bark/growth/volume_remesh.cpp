@@ -26,7 +26,7 @@ std::vector<std::array<uint32_t, 3>> canonical(std::vector<std::array<uint32_t, 
 
 bool retetrahedralize(TetComplex& c, const std::vector<GrowthObstacle>& obstacles, const TetSettings& settings,
                       const std::string& file, const std::string& where) {
-  const auto faces = c.interface_faces();
+  const auto faces = c.boundary_faces(TetComplex::kInside, c.on_interface);
   std::vector<uint32_t> kept;  // the interface points, ascending: TetGen's first points, in order
   for (uint32_t p = 0; p < c.points.size(); ++p)
     if (c.on_interface[p]) kept.push_back(p);
@@ -135,7 +135,8 @@ bool retetrahedralize(TetComplex& c, const std::vector<GrowthObstacle>& obstacle
   }
   // Switch Y keeps the interface's triangles unless a point lies on one (a fold of the
   // interface onto itself, which TetGen splits the triangle at): then nothing changes.
-  if (canonical(out.interface_faces()) != oriented) return false;
+  // (A triangle split at a point that was not on the interface loses faces here: no match either.)
+  if (canonical(out.boundary_faces(TetComplex::kInside, out.on_interface)) != oriented) return false;
   c = std::move(out);
   return true;
 }

@@ -140,6 +140,104 @@ TEST(TetAdjacency, InterfaceFacesMatchTheMapBasedScan) {
     for (uint32_t t : adj.around(p)) EXPECT_NE(std::find(c.tets[t].begin(), c.tets[t].end(), p), c.tets[t].end());
 }
 
+TEST(TetAdjacency, TheFilteredOrientationTestAgreesWithCGALsExactOne) {
+  // Random tetrahedra (the filter decides nearly all), and flat ones: a fourth point on the
+  // plane of three, exactly (integer coordinates) and then nudged by single ulps off it, where
+  // the double determinant is below its error bound and CGAL decides. Both signs occur.
+  uint64_t state = 12345;
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) * 0x1p-53;
+  };
+  auto point = [&] { return Eigen::Vector3d(next() - 0.5, next() - 0.5, next() - 0.5); };
+  long positive = 0, negative = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Eigen::Vector3d a = point(), b = point(), c = point(), d = point();
+    const bool exact = positive_tet_exact(a, b, c, d);
+    ASSERT_EQ(positive_tet(a, b, c, d), exact) << i;
+    (exact ? positive : negative) += 1;
+  }
+  EXPECT_GT(positive, 5000);
+  EXPECT_GT(negative, 5000);
+  long flat_positive = 0, flat_negative = 0, flat_zero = 0;
+  for (int i = 0; i < 2000; ++i) {
+    auto lattice = [&] { return Eigen::Vector3d(std::floor(next() * 64), std::floor(next() * 64), std::floor(next() * 64)); };
+    const Eigen::Vector3d a = lattice(), b = lattice(), c = lattice();
+    const double s = std::floor(next() * 8) - 3, t = std::floor(next() * 8) - 3;
+    Eigen::Vector3d d = a + s * (b - a) + t * (c - a);  // exact: small integers
+    const int k = i % 3;
+    if (i % 5 != 0) d[k] = std::nextafter(d[k], (i % 2) ? 1e9 : -1e9);
+    const Eigen::Vector3d shift(0.1, 0.2, 0.3);  // off the integers: rounding in the differences
+    const bool exact = positive_tet_exact(a + shift, b + shift, c + shift, d + shift);
+    ASSERT_EQ(positive_tet(a + shift, b + shift, c + shift, d + shift), exact) << i;
+    ASSERT_EQ(positive_tet(a, b, c, d), positive_tet_exact(a, b, c, d)) << i;
+    if (i % 5 == 0)
+      flat_zero += !positive_tet_exact(a, b, c, d) && !positive_tet_exact(a, c, b, d);
+    else
+      (exact ? flat_positive : flat_negative) += 1;
+  }
+  EXPECT_GT(flat_zero, 300);  // exactly flat: positive neither way round
+  EXPECT_GT(flat_positive, 100);
+  EXPECT_GT(flat_negative, 100);
+}
+
+TEST(TetAdjacency, RememberedNeighboursNeverChangeAnAnswerAfterTheComplexChanges) {
+  // A sphere grown and repaired for some steps through one adjacency, whose hints the splits,
+  // collapses and flips leave stale: every face's neighbour is still what a fresh adjacency
+  // finds by walking.
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+  TetAdjacency adj(c);
+  const double band_max = edge_range(c).second;
+  const GrowthFunction g = growth_of(0.15);
+  RepairStats total;
+  for (int k = 0; k < 6; ++k) {
+    advance_interface(c, adj, g, 1.0 * k / 6, 1.0 * (k + 1) / 6);
+    const RepairStats st = growth_repair_step(c, adj, 0.4 * band_max, band_max);
+    total.splits += st.splits;
+    total.collapses += st.collapses;
+  }
+  ASSERT_GT(total.splits, 0);
+  const TetAdjacency fresh(c);
+  for (uint32_t t = 0; t < c.tets.size(); ++t)
+    for (int f = 0; f < 4; ++f) ASSERT_EQ(adj.across(c, t, f), fresh.across(c, t, f)) << t << " " << f;
+  // And the interface faces at a point are those of the whole scan at it, in its order.
+  const auto faces = interface_faces(c, adj);
+  std::vector<std::array<uint32_t, 3>> at;
+  for (uint32_t v = 0; v < c.points.size(); ++v) {
+    if (!c.on_interface[v]) continue;
+    std::vector<std::array<uint32_t, 3>> expected;
+    for (const auto& f : faces)
+      if (std::find(f.begin(), f.end(), v) != f.end()) expected.push_back(f);
+    interface_faces_at(c, adj, v, at);
+    ASSERT_EQ(at, expected) << v;
+  }
+}
+
+TEST(InterfaceRefinement, SplittingAtTheCollapsesIsSplittingTheWholeInterface) {
+  // Collapses of short edges that may stretch others past the upper bound (as the repair
+  // makes them), then the long edges split: found from the collapses' stars, or from a scan
+  // of the whole interface, the complexes come out bit for bit the same.
+  TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
+  const auto [lo, hi] = edge_range(c);
+  TetAdjacency adj(c);
+  long stretched = 0;
+  std::vector<uint32_t> touched;
+  const auto edges = interface_edges(c);
+  const long collapses = collapse_short_interface_edges(c, adj, edges, 0.5 * (lo + hi), hi, &stretched, &touched);
+  ASSERT_GT(collapses, 0);
+  ASSERT_GT(stretched, 0);
+  TetComplex whole = c, local = c;
+  TetAdjacency whole_adj(whole), local_adj(local);
+  const long whole_splits = split_long_interface_edges(whole, whole_adj, interface_faces(whole, whole_adj), hi);
+  const long local_splits = split_long_interface_edges_at(local, local_adj, touched, hi);
+  EXPECT_GT(whole_splits, 0);
+  EXPECT_EQ(local_splits, whole_splits);
+  EXPECT_EQ(local.points, whole.points);
+  EXPECT_EQ(local.tets, whole.tets);
+  EXPECT_EQ(local.label, whole.label);
+  EXPECT_EQ(split_long_interface_edges_at(local, local_adj, {}, hi), 0);
+}
+
 TEST(InterfaceCoarsening, ShortEdgesCollapseKeepingAClosedManifoldAndPositiveTetrahedra) {
   TetComplex c = tetrahedralize_surface(icosphere(3, 0.5), TetSettings{}, "s.json", "/objects/0");
   const auto [lo, hi] = edge_range(c);
