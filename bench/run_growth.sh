@@ -23,6 +23,13 @@ python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step (pa
 echo "the same with the volume's upkeep every step (tetrahedra.upkeep_reach 0; bench/scenes/growth_tree_closeup_every_step.json)"
 read -r g s steps v0 v1 <<<"$(run bench/scenes/growth_tree_closeup_every_step.json)"
 python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step, TetGen set-up %.2f s' % ($v0, $v1, $steps, $g / $steps * 1e3, $s))"
+echo "the same with crack coupling on (3 stress iterations a step; bench/scenes/growth_tree_closeup_cracks.json, one run)"
+./build/phellem simulate bench/scenes/growth_tree_closeup_cracks.json -o "$out/o" --quiet --stats "$out/s.json"
+python3 -c "
+import json
+d = json.load(open('$out/s.json')); t = d['time_s']; g = d['growth']
+print('  %d -> %d interface vertices, %d steps: %.1f ms per step growing + %.1f ms per step crack coupling, TetGen set-up %.2f s' %
+      (g['vertices_start'], g['vertices_end'], g['steps'], t['growth'] / g['steps'] * 1e3, t['growth_crack'] / g['steps'] * 1e3, t['growth_setup']))"
 echo "the same growth on a sphere of the log's area (no rims; bench/scenes/growth_sphere_closeup.json)"
 read -r g s steps v0 v1 <<<"$(run bench/scenes/growth_sphere_closeup.json)"
 python3 -c "print('  %d -> %d interface vertices, %d steps: %.1f ms per step, TetGen set-up %.2f s' % ($v0, $v1, $steps, $g / $steps * 1e3, $s))"
