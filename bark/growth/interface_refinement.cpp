@@ -57,11 +57,12 @@ using Item = std::tuple<double, uint32_t, uint32_t>;  // length, a < b
 // Splits the queue's edges longest first (ties by index), each still longer than max_length
 // and still an interface edge, and the long edges the splits make; normal(p) is the
 // interface normal at p as the scan found it, and set_normal(m, n) records one for a new
-// point. The edges made are added to `made`, the edges split to `split`.
+// point. With `made` and `split` given, the edges made are added to the one and the edges
+// split to the other.
 template <class Normal, class SetNormal>
 long split_queue(TetComplex& c, TetAdjacency& adj, std::priority_queue<Item>& queue, double max_length, long max_splits,
-                 Normal normal, SetNormal set_normal, std::vector<std::array<uint32_t, 2>>& made,
-                 std::vector<std::array<uint32_t, 2>>& split) {
+                 Normal normal, SetNormal set_normal, std::vector<std::array<uint32_t, 2>>* made = nullptr,
+                 std::vector<std::array<uint32_t, 2>>* split = nullptr) {
   long splits = 0;
   std::vector<uint32_t> shared;
   while (!queue.empty() && splits < max_splits) {
@@ -97,9 +98,9 @@ long split_queue(TetComplex& c, TetAdjacency& adj, std::priority_queue<Item>& qu
     for (uint32_t t : adj.around(m)) ok = ok && positive_tet(c, c.tets[t]);
     if (!ok) c.points[m] = mid;
     ++splits;
-    split.push_back({a, b});
+    if (split) split->push_back({a, b});
     for (uint32_t w : {a, b, apex[0], apex[1]}) {
-      made.push_back({std::min(m, w), std::max(m, w)});
+      if (made) made->push_back({std::min(m, w), std::max(m, w)});
       const double len = (c.points[m] - c.points[w]).norm();
       if (len > max_length) queue.push({len, std::min(m, w), std::max(m, w)});
     }
@@ -128,7 +129,7 @@ long split_long_interface_edges(TetComplex& c, TetAdjacency& adj, const std::vec
         normals.resize(size_t(m) + 1, Eigen::Vector3d::Zero());
         normals[m] = n;
       },
-      edges, split);
+      &edges, &split);
   if (!split.empty()) {  // the split edges are gone (a split edge's halves are new edges)
     std::sort(split.begin(), split.end());
     std::erase_if(edges, [&](const std::array<uint32_t, 2>& e) { return std::binary_search(split.begin(), split.end(), e); });
@@ -179,14 +180,13 @@ long split_long_interface_edges_at(TetComplex& c, TetAdjacency& adj, std::vector
   asked.erase(std::unique(asked.begin(), asked.end()), asked.end());
   std::unordered_map<uint32_t, Eigen::Vector3d> normals;
   for (uint32_t p : asked) normals.emplace(p, normal_now(p));
-  std::vector<std::array<uint32_t, 2>> made, split;
   return split_queue(
       c, adj, queue, max_length, 1000000,
       [&](uint32_t p) {
         const auto it = normals.find(p);
         return it != normals.end() ? it->second : normals.emplace(p, normal_now(p)).first->second;
       },
-      [&](uint32_t m, const Eigen::Vector3d& n) { normals[m] = n; }, made, split);
+      [&](uint32_t m, const Eigen::Vector3d& n) { normals[m] = n; });
 }
 
 }  // namespace phellem::bark
