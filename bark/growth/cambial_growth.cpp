@@ -63,13 +63,18 @@ double mean_edge_length(const TriMesh& m) {
 }
 
 GrowthSurface extract_interface(const TetComplex& c) {
+  return extract_interface(c, c.boundary_faces(TetComplex::kInside, c.on_interface));
+}
+
+GrowthSurface extract_interface(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces) {
   GrowthSurface s;
-  std::map<uint32_t, uint32_t> index;
-  const auto faces = c.boundary_faces(TetComplex::kInside, c.on_interface);
+  std::vector<uint8_t> used(c.points.size(), 0);
   for (const auto& f : faces)
-    for (uint32_t v : f) index.emplace(v, 0);
-  for (auto& [p, i] : index) {
-    i = uint32_t(s.point.size());
+    for (uint32_t v : f) used[v] = 1;
+  std::vector<uint32_t> index(c.points.size(), 0);  // the points in ascending order
+  for (uint32_t p = 0; p < c.points.size(); ++p) {
+    if (!used[p]) continue;
+    index[p] = uint32_t(s.point.size());
     s.point.push_back(p);
     s.mesh.positions.push_back(c.points[p]);
     if (!c.uv.empty()) s.mesh.uvs.push_back(c.uv[p]);

@@ -61,7 +61,7 @@ GrowthCracks::GrowthCracks(StressParams params, CrackCouplingSettings settings)
     throw std::invalid_argument("GrowthCracks: iterations_per_step >= 0 and a finite stretch_stress >= 0");
 }
 
-void GrowthCracks::follow_splits(const TetComplex& c, const std::set<std::pair<uint32_t, uint32_t>>& interface_edges,
+void GrowthCracks::follow_splits(const TetComplex& c, const std::vector<std::pair<uint32_t, uint32_t>>& interface_edges,
                                  const std::map<uint32_t, uint32_t>& merged) {
   auto survivor = [&](uint32_t q) {
     for (auto it = merged.find(q); it != merged.end(); it = merged.find(q)) q = it->second;
@@ -76,7 +76,7 @@ void GrowthCracks::follow_splits(const TetComplex& c, const std::set<std::pair<u
   while (!todo.empty()) {
     const auto e = todo.back();
     todo.pop_back();
-    if (interface_edges.count(e)) {
+    if (std::binary_search(interface_edges.begin(), interface_edges.end(), e)) {
       now.insert(e);
     } else if (const auto it = child.find(e); it != child.end()) {
       const uint32_t m = survivor(it->second);  // a cap's split point merged into the cap vertex
@@ -89,23 +89,44 @@ void GrowthCracks::follow_splits(const TetComplex& c, const std::set<std::pair<u
   edges_ = std::move(now);
 }
 
+std::shared_ptr<const CrackedMesh> GrowthCracks::result() const {
+  if (!result_ && last_) {
+    std::vector<VertexId> source;
+    auto out = std::make_shared<CrackedMesh>(last_->result(&source));
+    for (size_t k = 0; k < source.size(); ++k) {
+      const uint32_t q = last_point_of_[source[k].idx()];
+      if (q != kNone) out->crack_width[k] = width_[q];
+    }
+    result_ = std::move(out);
+  }
+  return result_;
+}
+
 void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& file, const std::string& where) {
   const auto t0 = Clock::now();
   const std::string at_step = " (crack coupling, growth step " + std::to_string(stats_.steps) + ")";
   // Lagging vertices flatten triangles into caps, which the stress mesh cannot take.
   std::map<uint32_t, uint32_t> merged;
+  std::vector<std::array<uint32_t, 3>> faces;  // the interface's, sorted
   if (!c.on_crack.empty()) {
-    const CapStats caps = remove_interface_caps(c, adj, kMaxCapAngle);
+    CapStats caps = remove_interface_caps(c, adj, kMaxCapAngle);
     stats_.caps_removed += caps.removed;
     merged.insert(caps.merged.begin(), caps.merged.end());
+    faces = std::move(caps.faces);
+  } else {
+    faces = interface_faces(c, adj);
+    std::sort(faces.begin(), faces.end());
   }
   // The interface as the stress mesh: vertex k of the stress mesh is point surface.point[k]
   // (extract_interface lists each point once, and distinct points never share a position).
-  const GrowthSurface surface = extract_interface(c);
-  std::set<std::pair<uint32_t, uint32_t>> interface_edges;
+  const GrowthSurface surface = extract_interface(c, faces);
+  std::vector<std::pair<uint32_t, uint32_t>> interface_edges;
+  interface_edges.reserve(3 * surface.mesh.triangles.size());
   for (const auto& t : surface.mesh.triangles)
     for (int e = 0; e < 3; ++e)
-      interface_edges.insert(edge_key(surface.point[t[size_t(e)]], surface.point[t[size_t(e + 1) % 3]]));
+      interface_edges.push_back(edge_key(surface.point[t[size_t(e)]], surface.point[t[size_t(e + 1) % 3]]));
+  std::sort(interface_edges.begin(), interface_edges.end());
+  interface_edges.erase(std::unique(interface_edges.begin(), interface_edges.end()), interface_edges.end());
   follow_splits(c, interface_edges, merged);
 
   std::optional<StressMesh> mesh;
@@ -178,18 +199,13 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
       mesh->set_world_stress(f, wt > 0 ? Eigen::Matrix3d(w / wt) : mean);
     }
   }
-  // The cracker sets up the first step's stress from the pattern; later steps overwrite it
-  // with the transferred field (the mesh's faces hold it already: copy it across).
-  std::vector<Eigen::Matrix2d> carried;
-  if (started_) {
-    carried.reserve(g.number_of_faces());
-    for (FaceId f : g.faces()) carried.push_back(mesh->face(f).sigma);
-  }
-  std::optional<StressCracker> cracker;
-  cracker.emplace(std::move(*mesh), p);  // throws StressParamError: the caller names the key
+  // The cracker sets up the first step's stress from the pattern; later steps keep the
+  // transferred field the mesh's faces hold.
+  // Throws StressParamError: the caller names the key.
+  auto cracker = std::make_unique<StressCracker>(
+      std::move(*mesh), p, started_ ? StressCracker::InitialStress::kGiven : StressCracker::InitialStress::kPattern);
   SurfaceMesh& cg = cracker->mesh().mesh();
   if (started_) {
-    for (FaceId f : cg.faces()) cracker->mesh().face(f).sigma = carried[f.idx()];
     cracker->set_absolute_threshold(tau_);
     // The residuals and virtual displacement by vertex identity, as the stress.
     std::vector<Eigen::Matrix3d> residual(point_of.size(), Eigen::Matrix3d::Zero());
@@ -268,13 +284,9 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
     if (pts[0] == kNone || pts[1] == kNone || pts[2] == kNone) continue;
     faces_[sorted(pts)] = {pts, sm.face(f).sigma, sm.world_stress(f)};
   }
-  std::vector<VertexId> source;
-  auto out = std::make_shared<CrackedMesh>(cracker->result(&source));
-  for (size_t k = 0; k < source.size(); ++k) {
-    const uint32_t q = point_of[source[k].idx()];
-    if (q != kNone) out->crack_width[k] = width_[q];
-  }
-  result_ = std::move(out);
+  result_.reset();
+  last_ = std::move(cracker);
+  last_point_of_ = std::move(point_of);
   positions_ = c.points;
   points_seen_ = c.points.size();
   stats_.crack_edges = long(edges_.size());

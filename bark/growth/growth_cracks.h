@@ -32,6 +32,7 @@
 
 #include "bark/growth/tet_adjacency.h"
 #include "bark/stress/cracked_mesh.h"
+#include "bark/stress/stress_cracker.h"
 #include "bark/stress/stress_params.h"
 
 namespace phellem::bark {
@@ -67,8 +68,9 @@ class GrowthCracks {
   // UserError(file, where, ...) when the interface cannot carry stress (pinched by contact).
   void step(TetComplex& c, TetAdjacency& adj, const std::string& file, const std::string& where);
 
-  // The cracked interface of the last step (world space; widths the running maximum).
-  std::shared_ptr<const CrackedMesh> result() const { return result_; }
+  // The cracked interface of the last step (world space; widths the running maximum). Made
+  // from the last step's cracker on the first call after the step (most steps nobody asks).
+  std::shared_ptr<const CrackedMesh> result() const;
   // The crack edges on the interface (points, smaller first) and each point's width.
   const std::set<std::pair<uint32_t, uint32_t>>& crack_edges() const { return edges_; }
   const std::vector<float>& width() const { return width_; }
@@ -92,7 +94,8 @@ class GrowthCracks {
   const std::vector<Eigen::Vector3d>& displacement() const { return displacement_; }
 
  private:
-  void follow_splits(const TetComplex& c, const std::set<std::pair<uint32_t, uint32_t>>& interface_edges,
+  // `interface_edges`: the interface's edges (smaller point first), sorted, each once.
+  void follow_splits(const TetComplex& c, const std::vector<std::pair<uint32_t, uint32_t>>& interface_edges,
                      const std::map<uint32_t, uint32_t>& merged);
 
   StressParams params_;
@@ -106,7 +109,9 @@ class GrowthCracks {
   std::vector<Eigen::Vector3d> positions_;  // the points as the last step left them
   size_t points_seen_ = 0;                  // points the last step knew
   FaceStress faces_;
-  std::shared_ptr<const CrackedMesh> result_;
+  mutable std::shared_ptr<const CrackedMesh> result_;  // made by result() from the two below
+  std::unique_ptr<StressCracker> last_;                 // the last step's cracker
+  std::vector<uint32_t> last_point_of_;                 // its vertices' points
   CrackCouplingStats stats_;
 };
 

@@ -9,6 +9,19 @@ namespace phellem::bark {
 
 namespace {
 
+// Whether some angle of the triangle may exceed `cos_bound`'s angle: a corner's cosine
+// below it plus a margin far above rounding (so largest_angle decides every triangle
+// near the bound).
+bool may_have_angle_above(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double cos_bound) {
+  const std::array<Eigen::Vector3d, 3> p{a, b, c};
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d u = p[size_t(k + 1) % 3] - p[size_t(k)], v = p[size_t(k + 2) % 3] - p[size_t(k)];
+    const double uv = u.norm() * v.norm();
+    if (!(u.dot(v) > (cos_bound + 1e-6) * uv)) return true;
+  }
+  return false;
+}
+
 // The largest angle of a triangle and its corner.
 std::pair<double, int> largest_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   const std::array<Eigen::Vector3d, 3> p{a, b, c};
@@ -30,15 +43,18 @@ std::pair<double, int> largest_angle(const Eigen::Vector3d& a, const Eigen::Vect
 CapStats remove_interface_caps(TetComplex& c, TetAdjacency& adj, double max_angle) {
   CapStats st;
   std::vector<uint32_t> shared;
+  const double cos_max = std::cos(max_angle);
   // Each pass works on the faces as they were; a removed cap changes its neighbours, so the
   // faces are found again until no cap is left that can be removed.
   for (int pass = 0; pass < 4; ++pass) {
     long removed = 0;
+    bool changed = false;  // a split, kept or collapsed
     std::vector<std::array<uint32_t, 3>> faces = interface_faces(c, adj);
     std::sort(faces.begin(), faces.end());
     std::vector<uint8_t> touched(c.points.size(), 0);
     for (const auto& f : faces) {
       if (touched[f[0]] || touched[f[1]] || touched[f[2]]) continue;  // changed in this pass
+      if (!may_have_angle_above(c.points[f[0]], c.points[f[1]], c.points[f[2]], cos_max)) continue;
       const auto [angle, k] = largest_angle(c.points[f[0]], c.points[f[1]], c.points[f[2]]);
       if (!(angle > max_angle)) continue;
       if (pass == 0) ++st.found;
@@ -52,6 +68,7 @@ CapStats remove_interface_caps(TetComplex& c, TetAdjacency& adj, double max_angl
       const uint32_t m = c.add_point_between(a, b, t);
       if (!c.on_crack.empty()) c.on_crack[m] = 0;  // may merge into p even when a–b is a crack edge
       adj.split_edge_tets(c, a, b, m, shared);
+      changed = true;
       touched.resize(c.points.size(), 0);
       touched[a] = touched[b] = touched[p] = touched[m] = 1;
       if (collapse_interface_edge(c, adj, m, p)) {
@@ -63,7 +80,15 @@ CapStats remove_interface_caps(TetComplex& c, TetAdjacency& adj, double max_angl
           st.merged.emplace_back(m, p);
       }
     }
+    if (!changed) {
+      st.faces = std::move(faces);
+      break;
+    }
     if (removed == 0) break;
+  }
+  if (st.faces.empty()) {
+    st.faces = interface_faces(c, adj);
+    std::sort(st.faces.begin(), st.faces.end());
   }
   return st;
 }

@@ -7,6 +7,7 @@
 // vertex keeps its place (it may lie on a crack), the two triangles become one edge.
 #pragma once
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct CapStats {
   // (gone, survivor) of each collapse: a crack edge a–b that a cap split follows its split
   // point into the survivor (crack coupling).
   std::vector<std::pair<uint32_t, uint32_t>> merged;
+  // The interface's faces after the removal, sorted (c.interface_faces()): the last pass
+  // found them and changed nothing.
+  std::vector<std::array<uint32_t, 3>> faces;
 };
 
 // Removes interface caps with an angle above `max_angle` (radians), each split kept only when

@@ -34,7 +34,11 @@ double CrackedMesh::crack_length() const {
   return l;
 }
 
-StressCracker::StressCracker(StressMesh mesh, StressParams params) : mesh_(std::move(mesh)), params_(std::move(params)) {
+StressCracker::StressCracker(StressMesh mesh, StressParams params)
+    : StressCracker(std::move(mesh), std::move(params), InitialStress::kPattern) {}
+
+StressCracker::StressCracker(StressMesh mesh, StressParams params, InitialStress initial)
+    : mesh_(std::move(mesh)), params_(std::move(params)) {
   if (auto e = validate(params_)) throw *e;
   if (!mesh_.has_uvs()) {  // what lives in UV space needs texture coordinates
     if (!params_.image.empty())
@@ -52,7 +56,7 @@ StressCracker::StressCracker(StressMesh mesh, StressParams params) : mesh_(std::
   insert_.snap_angle = params_.snap_angle_deg * kPi / 180.0;
   insert_.stress_alleviation = params_.stress_alleviation;
   insert_.max_beta_sv = params_.kappa * mesh_.max_beta_singular_value();  // sec. 3.1.4
-  initialize_stress(mesh_, params_);
+  if (initial == InitialStress::kPattern) initialize_stress(mesh_, params_);
 }
 
 const StressStats& StressCracker::stats() const {

@@ -42,6 +42,11 @@ class StressCracker {
   // Throws StressParamError for a parameter out of range, or a UV stroke or stress image on a
   // mesh without texture coordinates.
   StressCracker(StressMesh mesh, StressParams params);
+  // The same without setting up the pattern's stress (initialize_stress): for a caller that
+  // gives every face its stress itself before the first iteration (crack coupling carries
+  // the last growth step's). The faces' stress is then whatever the mesh held.
+  enum class InitialStress { kPattern, kGiven };
+  StressCracker(StressMesh mesh, StressParams params, InitialStress initial);
 
   void iterate();
   // All remaining iterations; `progress(done, total)` after each.

@@ -1,5 +1,8 @@
 #include "bark/stress/stress_mesh.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -24,6 +27,8 @@ StressMesh StressMesh::from(const TriMesh& in) {
   StressMesh m;
   m.has_uvs_ = in.has_uvs();
   SurfaceMesh& g = *m.mesh_;
+  g.reserve(SurfaceMesh::size_type(in.positions.size()), SurfaceMesh::size_type(3 * in.triangles.size() / 2 + 3),
+            SurfaceMesh::size_type(in.triangles.size()));
   // Weld: one mesh vertex per distinct position (exact match), in first-use order.
   std::map<std::array<double, 3>, VertexId> welded;
   std::vector<VertexId> vertex_of(in.positions.size());
@@ -35,18 +40,18 @@ StressMesh StressMesh::from(const TriMesh& in) {
   }
   for (size_t t = 0; t < in.triangles.size(); ++t) {
     const auto& tri = in.triangles[t];
-    const std::string where = "triangle " + std::to_string(t);
+    auto where_t = [t] { return "triangle " + std::to_string(t); };  // made only for an error
     for (uint32_t k : tri)
       if (k >= in.positions.size())
-        throw MeshError(where, "vertex index " + std::to_string(k) + " is out of range (" + std::to_string(in.positions.size()) +
+        throw MeshError(where_t(), "vertex index " + std::to_string(k) + " is out of range (" + std::to_string(in.positions.size()) +
                                    " positions)");
     const VertexId a = vertex_of[tri[0]], b = vertex_of[tri[1]], c = vertex_of[tri[2]];
-    if (a == b || b == c || a == c) throw MeshError(where, "is degenerate (a vertex repeats)");
+    if (a == b || b == c || a == c) throw MeshError(where_t(), "is degenerate (a vertex repeats)");
     const Eigen::Vector3d pa = in.positions[tri[0]], pb = in.positions[tri[1]], pc = in.positions[tri[2]];
-    if (!(triangle_shape(pa, pb, pc) > 1e-12)) throw MeshError(where, "is degenerate (zero area)");
+    if (!(triangle_shape(pa, pb, pc) > 1e-12)) throw MeshError(where_t(), "is degenerate (zero area)");
     const FaceId f = g.add_face(a, b, c);
     if (f == SurfaceMesh::null_face())
-      throw MeshError(where,
+      throw MeshError(where_t(),
                       "makes the mesh non-manifold (an edge already used by two triangles, a triangle of opposite orientation, "
                       "or a pinched vertex)");
     if (m.has_uvs_) {
@@ -118,9 +123,17 @@ Eigen::Vector3d StressMesh::vertex_normal(VertexId v) const {
 }
 
 double StressMesh::max_beta_singular_value() const {
-  double m = 0;
-  for (FaceId f : mesh_->faces()) m = std::max(m, Eigen::JacobiSVD<Eigen::Matrix3d>(face_[f].beta).singularValues()[0]);
-  return m;
+  // A maximum: the same whatever the thread count. (num_faces counts removed faces too.)
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, mesh_->num_faces(), 1024), 0.0,
+      [&](const tbb::blocked_range<size_t>& r, double m) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+          const FaceId f{uint32_t(i)};
+          if (!mesh_->is_removed(f)) m = std::max(m, Eigen::JacobiSVD<Eigen::Matrix3d>(face_[f].beta).singularValues()[0]);
+        }
+        return m;
+      },
+      [](double a, double b) { return std::max(a, b); });
 }
 
 TriMesh StressMesh::to_trimesh(std::vector<VertexId>* source) const {

@@ -153,6 +153,16 @@ TEST(GrowthCracks, CracksPersistLengthenAndWidenAsALogGrows) {
     ASSERT_EQ(c.first_inverted(), -1) << "step " << g.steps_done();
     const auto faces = c.interface_faces();
     ASSERT_TRUE(closed_manifold(faces)) << "step " << g.steps_done();
+    // The crack step takes the interface from the adjacency's scan, sorted: the same faces.
+    {
+      const TetAdjacency adj(c);
+      auto scanned = interface_faces(c, adj);
+      std::sort(scanned.begin(), scanned.end());
+      ASSERT_EQ(scanned, faces) << "step " << g.steps_done();
+      const GrowthSurface a = extract_interface(c), b = extract_interface(c, scanned);
+      ASSERT_EQ(a.point, b.point);
+      ASSERT_EQ(a.mesh.triangles, b.mesh.triangles);
+    }
     // The interface is the stress mesh: the cracked mesh has one vertex per interface point.
     std::set<uint32_t> points;
     for (const auto& f : faces) points.insert(f.begin(), f.end());
@@ -207,6 +217,7 @@ TEST(InterfaceCaps, AFlattenedTriangleBecomesAnEdgeAndItsCapVertexStays) {
   EXPECT_GE(st.removed, 1);
   EXPECT_EQ(c.first_inverted(), -1);
   const auto after = c.interface_faces();
+  EXPECT_EQ(st.faces, after);  // the faces it hands on are the interface's, sorted
   EXPECT_TRUE(closed_manifold(after));
   EXPECT_EQ(after.size(), faces.size());  // the split adds two faces, the collapse removes two
   EXPECT_TRUE(c.on_interface[p]);

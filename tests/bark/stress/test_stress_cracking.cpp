@@ -397,3 +397,42 @@ TEST(StressCracker, UVStrokesAndImagesNeedTextureCoordinates) {
   ok.run();
   EXPECT_GT(ok.stats().crack_edges, 0);
 }
+
+TEST(StressCracker, GivenStressIsKeptAndThePatternsIsSetOtherwise) {
+  // Crack coupling gives every face its stress itself (InitialStress::kGiven): the cracker
+  // must keep it, not overwrite it with the pattern's.
+  const TriMesh sheet = jittered_sheet(8, 8, 1.0, 1.0, 0.3, 2);
+  const StressParams p = sheet_params(StressPattern::Horizontal);
+  StressMesh given = StressMesh::from(sheet), patterned = StressMesh::from(sheet);
+  std::vector<Eigen::Matrix2d> sigma;
+  for (StressMesh* m : {&given, &patterned}) {
+    sigma.clear();
+    for (FaceId f : m->mesh().faces()) {
+      m->face(f).sigma << 0.25 + 0.01 * f.idx(), 0.5, 0.5, -1.0;
+      sigma.push_back(m->face(f).sigma);
+    }
+  }
+  const StressCracker kept(std::move(given), p, StressCracker::InitialStress::kGiven);
+  const StressCracker set(std::move(patterned), p);
+  size_t i = 0, differ = 0;
+  for (FaceId f : kept.mesh().mesh().faces()) {
+    EXPECT_EQ(kept.mesh().face(f).sigma, sigma[i]) << "face " << i;
+    differ += set.mesh().face(f).sigma != sigma[i];
+    ++i;
+  }
+  EXPECT_EQ(differ, i);  // the pattern replaced every face's
+}
+
+TEST(StressMesh, LargestBetaSingularValueIsTheMaximumOverTheFaces) {
+  // Taken in parallel over the face indices, removed faces skipped: the same as the serial
+  // maximum, also after crack insertion has added faces.
+  const TriMesh sheet = jittered_sheet(30, 30, 1.0, 1.0, 0.3, 4);
+  StressCracker c(StressMesh::from(sheet), sheet_params(StressPattern::UniformTension));
+  for (int k = 0; k < 3; ++k) c.iterate();
+  ASSERT_GT(c.stats().splits, 0);
+  double serial = 0;
+  for (FaceId f : c.mesh().mesh().faces())
+    serial = std::max(serial, Eigen::JacobiSVD<Eigen::Matrix3d>(c.mesh().face(f).beta).singularValues()[0]);
+  EXPECT_EQ(c.mesh().max_beta_singular_value(), serial);
+  EXPECT_GT(serial, 0);
+}
