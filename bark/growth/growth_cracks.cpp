@@ -6,6 +6,9 @@
 #include <cmath>
 #include <map>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Geometry>
 
 #include "bark/growth/cambial_growth.h"
@@ -153,32 +156,43 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
     const double k = settings_.stretch_stress * std::abs(params_.magnitude);
     std::vector<Eigen::Matrix3d> sum(point_of.size(), Eigen::Matrix3d::Zero());
     std::vector<double> weight(point_of.size(), 0.0);
-    std::vector<char> known(g.number_of_faces(), 0);
-    for (FaceId f : g.faces()) {
-      const auto vs = mesh->vertices(f);
-      const std::array<uint32_t, 3> pts{point_of[vs[0].idx()], point_of[vs[1].idx()], point_of[vs[2].idx()]};
-      const auto it = faces_.find(sorted(pts));
-      if (it == faces_.end()) continue;
-      const FaceStressRecord& r = it->second;
-      FaceState& s = mesh->face(f);
-      bool same = r.points == pts;
-      for (uint32_t q : pts) same = same && positions_[q] == c.points[q];
-      if (same) {
-        s.sigma = r.sigma;  // an unchanged face keeps its stress exactly
-      } else {
-        // The record's corners in its own order, old and new.
-        std::array<Eigen::Vector3d, 3> was, is;
-        for (size_t j = 0; j < 3; ++j) {
-          was[j] = positions_[r.points[j]];
-          is[j] = c.points[r.points[j]];
+    // Each known face's stress on its own (in parallel; the stress mesh is fresh, so its
+    // faces are 0 .. n−1), then summed at the vertices in face order.
+    const size_t n_faces = g.number_of_faces();
+    std::vector<char> known(n_faces, 0);
+    std::vector<Eigen::Matrix3d> world(n_faces);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n_faces, 512), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        const FaceId f{uint32_t(i)};
+        const auto vs = mesh->vertices(f);
+        const std::array<uint32_t, 3> pts{point_of[vs[0].idx()], point_of[vs[1].idx()], point_of[vs[2].idx()]};
+        const auto it = faces_.find(sorted(pts));
+        if (it == faces_.end()) continue;
+        const FaceStressRecord& r = it->second;
+        FaceState& s = mesh->face(f);
+        bool same = r.points == pts;
+        for (uint32_t q : pts) same = same && positions_[q] == c.points[q];
+        if (same) {
+          s.sigma = r.sigma;  // an unchanged face keeps its stress exactly
+        } else {
+          // The record's corners in its own order, old and new.
+          std::array<Eigen::Vector3d, 3> was, is;
+          for (size_t j = 0; j < 3; ++j) {
+            was[j] = positions_[r.points[j]];
+            is[j] = c.points[r.points[j]];
+          }
+          mesh->set_world_stress(f, r.world + k * green_strain(was, is));
         }
-        mesh->set_world_stress(f, r.world + k * green_strain(was, is));
+        known[i] = 1;
+        world[i] = mesh->world_stress(f);
       }
-      known[f.idx()] = 1;
-      const Eigen::Matrix3d w = mesh->world_stress(f);
-      for (VertexId v : vs) {
-        sum[v.idx()] += s.area * w;
-        weight[v.idx()] += s.area;
+    });
+    for (FaceId f : g.faces()) {
+      if (!known[f.idx()]) continue;
+      const double area = mesh->face(f).area;
+      for (VertexId v : mesh->vertices(f)) {
+        sum[v.idx()] += area * world[f.idx()];
+        weight[v.idx()] += area;
       }
     }
     Eigen::Matrix3d mean = Eigen::Matrix3d::Zero();
@@ -278,6 +292,7 @@ void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& fil
   for (size_t v = 0; v < point_of.size(); ++v)
     if (point_of[v] != kNone) width_[point_of[v]] = std::max(width_[point_of[v]], float(alg1[v]));
   faces_.clear();
+  faces_.reserve(cg.number_of_faces());
   for (FaceId f : cg.faces()) {
     const auto vs = sm.vertices(f);
     const std::array<uint32_t, 3> pts{point_of[vs[0].idx()], point_of[vs[1].idx()], point_of[vs[2].idx()]};

@@ -1,6 +1,7 @@
 #include "bark/stress/stress_mesh.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 #include <Eigen/Geometry>
@@ -62,8 +63,11 @@ StressMesh StressMesh::from(const TriMesh& in) {
         m.uv_[c2] = in.uvs[k];
       }
     }
-    m.update_geometry(f);
   }
+  // Each face's geometry from its own corners (fixed once the face is added): in parallel.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, g.num_faces(), 1024), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) m.update_geometry(FaceId{uint32_t(i)});
+  });
   // Unreferenced positions would be isolated vertices: drop them.
   for (VertexId v : g.vertices())
     if (g.is_isolated(v)) g.remove_vertex(v);
@@ -123,17 +127,38 @@ Eigen::Vector3d StressMesh::vertex_normal(VertexId v) const {
 }
 
 double StressMesh::max_beta_singular_value() const {
-  // A maximum: the same whatever the thread count. (num_faces counts removed faces too.)
-  return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, mesh_->num_faces(), 1024), 0.0,
+  // σ₁(β)² is the largest eigenvalue of βᵀβ: at least its largest diagonal entry (a column's
+  // squared norm), at most its largest absolute row sum (Gershgorin). Only faces whose upper
+  // bound reaches every face's lower bound (less a margin far above rounding) can hold the
+  // maximum, and only those take the SVD: the same maximum as the SVD of every face, at a
+  // fraction of the cost. Maxima: the same whatever the thread count. (num_faces counts
+  // removed faces too.)
+  const size_t n = mesh_->num_faces();
+  std::vector<double> upper(n, -1);
+  auto max_of = [](double a, double b) { return std::max(a, b); };
+  const double lower = tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, n, 1024), 0.0,
       [&](const tbb::blocked_range<size_t>& r, double m) {
         for (size_t i = r.begin(); i != r.end(); ++i) {
           const FaceId f{uint32_t(i)};
-          if (!mesh_->is_removed(f)) m = std::max(m, Eigen::JacobiSVD<Eigen::Matrix3d>(face_[f].beta).singularValues()[0]);
+          if (mesh_->is_removed(f)) continue;
+          const Eigen::Matrix3d g = face_[f].beta.transpose() * face_[f].beta;
+          m = std::max(m, g.diagonal().maxCoeff());
+          upper[i] = g.cwiseAbs().rowwise().sum().maxCoeff();
         }
         return m;
       },
-      [](double a, double b) { return std::max(a, b); });
+      max_of);
+  const double needed = lower * (1 - 1e-6);
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, n, 1024), 0.0,
+      [&](const tbb::blocked_range<size_t>& r, double m) {
+        for (size_t i = r.begin(); i != r.end(); ++i)
+          if (upper[i] >= needed)
+            m = std::max(m, Eigen::JacobiSVD<Eigen::Matrix3d>(face_[FaceId{uint32_t(i)}].beta).singularValues()[0]);
+        return m;
+      },
+      max_of);
 }
 
 TriMesh StressMesh::to_trimesh(std::vector<VertexId>* source) const {
