@@ -137,6 +137,7 @@ void CambialGrowth::couple_cracks(const StressParams& params, const CrackCouplin
 
 bool CambialGrowth::step() {
   if (step_ >= settings_.steps) return false;
+  if (cracks_) cracks_->release_cracker();  // the last step's result() was taken, or is not wanted
   const auto t0 = Clock::now();
   // Eq. (1) over [age(k), age(k+1)]: reversed, the second age is the younger one and the
   // thickening negative (the surface moves inwards).

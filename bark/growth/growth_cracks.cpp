@@ -105,7 +105,13 @@ std::shared_ptr<const CrackedMesh> GrowthCracks::result() const {
   return result_;
 }
 
+void GrowthCracks::release_cracker() {
+  last_.reset();
+  last_point_of_ = {};
+}
+
 void GrowthCracks::step(TetComplex& c, TetAdjacency& adj, const std::string& file, const std::string& where) {
+  release_cracker();
   const auto t0 = Clock::now();
   const std::string at_step = " (crack coupling, growth step " + std::to_string(stats_.steps) + ")";
   // Lagging vertices flatten triangles into caps, which the stress mesh cannot take.

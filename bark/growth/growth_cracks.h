@@ -69,8 +69,13 @@ class GrowthCracks {
   void step(TetComplex& c, TetAdjacency& adj, const std::string& file, const std::string& where);
 
   // The cracked interface of the last step (world space; widths the running maximum). Made
-  // from the last step's cracker on the first call after the step (most steps nobody asks).
+  // from the last step's cracker on the first call after the step (most steps nobody asks),
+  // until release_cracker(); null after it unless asked for before.
   std::shared_ptr<const CrackedMesh> result() const;
+  // Frees the last step's cracker (its stress mesh: tens of MB on a large interface), which
+  // only result() needs: CambialGrowth::step calls it first, so that two crackers never live
+  // at once and none through a re-tetrahedralization.
+  void release_cracker();
   // The crack edges on the interface (points, smaller first) and each point's width.
   const std::set<std::pair<uint32_t, uint32_t>>& crack_edges() const { return edges_; }
   const std::vector<float>& width() const { return width_; }
