@@ -76,8 +76,9 @@ struct GrowthSurface {
   std::vector<uint32_t> point;
 };
 GrowthSurface extract_interface(const TetComplex& c);
-// The same from the interface's faces the caller has, sorted (interface_faces(c, adj),
-// sorted, is c.interface_faces()).
+// The same from the interface's faces the caller has, sorted: interface_faces(c, adj) sorted
+// are the same faces as c.boundary_faces(kInside, c.on_interface) (test_growth_cracks.cpp
+// checks it on a growing log).
 GrowthSurface extract_interface(const TetComplex& c, const std::vector<std::array<uint32_t, 3>>& faces);
 
 // The mean edge length of a mesh's triangles (each edge counted once).

@@ -21,8 +21,8 @@ struct CapStats {
   // (gone, survivor) of each collapse: a crack edge a–b that a cap split follows its split
   // point into the survivor (crack coupling).
   std::vector<std::pair<uint32_t, uint32_t>> merged;
-  // The interface's faces after the removal, sorted (c.interface_faces()): the last pass
-  // found them and changed nothing.
+  // The interface's faces after the removal, sorted (as c.interface_faces()): those the last
+  // pass found when it changed nothing, else found again at the end.
   std::vector<std::array<uint32_t, 3>> faces;
 };
 
