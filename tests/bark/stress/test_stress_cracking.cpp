@@ -398,7 +398,7 @@ TEST(StressCracker, UVStrokesAndImagesNeedTextureCoordinates) {
   EXPECT_GT(ok.stats().crack_edges, 0);
 }
 
-TEST(StressCracker, GivenStressIsKeptAndThePatternsIsSetOtherwise) {
+TEST(StressCracker, GivenStressIsKeptAndThePatternsIsSetWithoutIt) {
   // Crack coupling gives every face its stress itself (InitialStress::kGiven): the cracker
   // must keep it, not overwrite it with the pattern's.
   const TriMesh sheet = jittered_sheet(8, 8, 1.0, 1.0, 0.3, 2);
