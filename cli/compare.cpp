@@ -5,9 +5,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "cli/outputs.h"
 #include "compare/compare_inputs.h"
@@ -17,6 +17,7 @@
 #include "scene/memory_budget.h"
 #include "util/errors.h"
 #include "util/output_set.h"
+#include "util/thread_probe.h"
 
 namespace phellem {
 
@@ -80,10 +81,15 @@ double scale_value(const std::string& opt, const std::string& v) {
 CompareOptions parse(const std::vector<std::string>& args) {
   CompareOptions o;
   std::vector<std::string> files;
+  std::set<std::string> given;  // options with a value (per input for --scale and --albedo)
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> std::string {
       if (i + 1 >= args.size()) bad(a, "missing value");
+      const std::string& v = args[i + 1];
+      const bool labelled = a == "--scale" || a == "--albedo";
+      const std::string key = a == "--output" ? "-o" : labelled ? a + " " + v.substr(0, v.find('=')) : a;
+      if (!given.insert(key).second) bad(key, "given twice; give each option once");
       if (args[i + 1].empty()) bad(a, "the value is empty");
       return args[++i];
     };
@@ -149,21 +155,21 @@ std::string compare_usage() {
 int run_compare(const std::vector<std::string>& args) {
   const CompareOptions o = parse(args);
   std::unique_ptr<tbb::global_control> limit;
+  if (o.threads) require_startable_threads("--threads", *o.threads);
   if (o.threads) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(*o.threads));
   OutputSet out;
   if (!o.html.empty()) out.expect_file("-o", o.html);
   if (!o.json.empty()) out.expect_file("--json", o.json);
+  out.expect_input("A", o.a.path);
+  out.expect_input("B", o.b.path);
+  if (!o.a.albedo_path.empty()) out.expect_input("--albedo A", o.a.albedo_path);
+  if (!o.b.albedo_path.empty()) out.expect_input("--albedo B", o.b.albedo_path);
   const LoadedInput a = load_input(o.a);
   const LoadedInput b = load_input(o.b);
   check_compare_memory(a, b, o.memory_limit);
   const CompareReport report = compare_inputs(a, b);
   if (!o.html.empty())
-    out.write("-o", o.html, [&](const std::string& tmp) {
-      std::ofstream f(tmp, std::ios::binary);
-      f << report_html(report);
-      f.close();
-      if (!f) throw UserError(tmp, "-o", "cannot write the report");
-    });
+    out.write_bytes("-o", o.html, report_html(report));
   if (!o.json.empty()) write_json_output(out, "--json", o.json, report_json(report));
   out.commit();
   if (!o.quiet) print_summary(report);

@@ -82,6 +82,8 @@ int run_fit(const cli::Options& o) {
   // Every output is checked before any work.
   const std::filesystem::path dir(o.exr);
   OutputSet out;
+  out.expect_input("HEIGHT_IMAGE", o.scene);
+  if (!o.albedo.empty()) out.expect_input("--albedo", o.albedo);
   out.expect_folder("-o", o.exr);
   const std::string fitted = (dir / "fitted.json").string(), patch_path = (dir / "patch.exr").string();
   for (const std::string& f : {fitted, patch_path, (dir / "report.html").string(), (dir / "report.json").string()})
@@ -235,11 +237,7 @@ int run_fit(const cli::Options& o) {
 
   const std::string scene_text = fitted_scene_json(best, space.preset, best_seed, colours ? &*colours : nullptr);
   check_fitted_scene(scene_text, best);
-  out.write("-o", fitted, [&](const std::string& tmp) {
-    std::FILE* f = std::fopen(tmp.c_str(), "w");
-    const bool ok = f && std::fwrite(scene_text.data(), 1, scene_text.size(), f) == scene_text.size();
-    if (!f || std::fclose(f) != 0 || !ok) throw UserError(fitted, "-o", "cannot write");
-  });
+  out.write_bytes("-o", fitted, scene_text);
   out.write("-o", patch_path, [&](const std::string& tmp) { write_patch_exr(patch, tmp); });
   write_fit_reports(out, o.exr, report, fit);
   out.commit();

@@ -1,12 +1,10 @@
 #include "cli/fit_report.h"
 
 #include <filesystem>
-#include <fstream>
 
 #include "cli/outputs.h"
 #include "compare/report_html.h"
 #include "compare/report_json.h"
-#include "util/errors.h"
 
 namespace phellem {
 
@@ -16,12 +14,7 @@ void write_fit_reports(OutputSet& out, const std::string& dir, const CompareRepo
   j["fit"] = fit;
   write_json_output(out, "-o", (d / "report.json").string(), j);
   const std::string html = (d / "report.html").string(), text = report_html(report);
-  out.write("-o", html, [&](const std::string& tmp) {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    f.close();
-    if (!f) throw UserError(html, "-o", "cannot write");
-  });
+  out.write_bytes("-o", html, text);
 }
 
 }  // namespace phellem

@@ -32,6 +32,7 @@ int run_growth(const cli::Options& o) {
   OutputSet out;
   expect_outputs(o, out);
   Loaded l = load(o);
+  expect_scene_inputs(l.desc, out);
   std::vector<std::pair<size_t, std::unique_ptr<TreeStripSimulation>>> sims;
   for (size_t oi = 0; oi < l.desc.objects.size(); ++oi) {
     const ObjectDesc& obj = l.desc.objects[oi];

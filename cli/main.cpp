@@ -5,11 +5,13 @@
 #include <OpenImageIO/imageio.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "cli/compare.h"
 #include "cli/frame_sequence.h"
@@ -29,6 +31,7 @@
 #include "util/errors.h"
 #include "util/output_set.h"
 #include "util/temp_files.h"
+#include "util/thread_probe.h"
 
 namespace phellem {
 
@@ -49,6 +52,7 @@ int run_render(const cli::Options& o) {
   expect_outputs(o, out);
   const auto t0 = Clock::now();
   Loaded l = load(o);
+  expect_scene_inputs(l.desc, out);
   const double t_load = since(t0);
   const auto t1 = Clock::now();
   const BarkResults bark = simulate_bark(l.desc, !o.quiet);
@@ -99,6 +103,7 @@ int run_turntable(const cli::Options& o) {
   OutputSet out;
   expect_outputs(o, out);
   Loaded l = load(o);
+  expect_scene_inputs(l.desc, out);
   // Geometry is diced once, for the first frame's camera, so it does not crawl.
   const BarkResults bark = simulate_bark(l.desc, !o.quiet);
   const auto scene = build_render_scene(l.desc, bark, l.desc.camera, l.width, l.height, !o.quiet);
@@ -129,13 +134,17 @@ int main(int argc, char** argv) {
     std::cout << "phellem 0.1.0\n";
     return 0;
   }
+  std::string input = "<command line>";  // the file errors without a file of their own are reported at
   try {
     if (!args.empty() && args[0] == "compare") return run_compare(std::vector<std::string>(args.begin() + 1, args.end()));
     const cli::Options o = cli::parse(args);
+    if (!o.scene.empty()) input = o.scene;
     if (o.threads) {
+      require_startable_threads("--threads", *o.threads);
       static tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(*o.threads));
     }
-    OIIO::attribute("threads", o.threads.value_or(0));
+    // OpenImageIO's own pool only decodes images: more threads than cores would not pay.
+    OIIO::attribute("threads", o.threads ? std::min<int>(*o.threads, int(std::thread::hardware_concurrency())) : 0);
     if (o.memory_estimate) return run_memory_estimate(o);
     if (o.command == "simulate") return run_simulate(o);
     if (o.command == "growth") return run_growth(o);
@@ -145,6 +154,13 @@ int main(int argc, char** argv) {
     return o.command == "render" ? run_render(o) : run_turntable(o);
   } catch (const UserError& e) {
     std::cerr << "phellem: error: " << printable(e.what()) << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // Memory is estimated per stage before work starts (cli/memory_check.h); this is a process
+    // whose allowance (ulimit -v, a container) is below what the machine reports.
+    std::cerr << "phellem: error: " << printable(input)
+              << ": memory: ran out of memory; this process may use less than the run needs (see `ulimit -v`): "
+                 "lower the sizes (--res, the scene's resolutions) or --threads, or check with --memory-estimate\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "phellem: internal error: " << printable(e.what()) << "\n";

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <set>
 
 #include "scene/memory_budget.h"
 #include "util/errors.h"
@@ -112,9 +113,11 @@ Options parse(const std::vector<std::string>& args) {
     bad(o.command, "unknown command; allowed: render, turntable, growth, simulate, slice, compare, fit, preview\n" + usage());
   const bool fit = o.command == "fit";
   const bool frames = o.command == "turntable" || o.command == "growth";
+  std::set<std::string> given;  // options with a value: a second one would silently win
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> std::string {
+      if (!given.insert(a == "--output" ? "-o" : a).second) bad(a, "given twice; give each option once");
       if (i + 1 >= args.size()) bad(a, "missing value");
       // An empty value is a mistake (an unset shell variable), not "option not given".
       if (args[i + 1].empty()) bad(a, "the value is empty");

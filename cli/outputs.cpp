@@ -1,9 +1,6 @@
 #include "cli/outputs.h"
 
-#include <fstream>
-
 #include "cli/frame_sequence.h"
-#include "util/errors.h"
 
 namespace phellem {
 
@@ -12,6 +9,7 @@ std::string render_exr_path(const cli::Options& o) { return o.exr.empty() && o.p
 std::string png_frames_option(const cli::Options& o) { return o.png_frames ? "--png" : "--mp4"; }
 
 void expect_outputs(const cli::Options& o, OutputSet& out) {
+  if (!o.scene.empty()) out.expect_input("SCENE", o.scene);
   if (o.command == "render") {
     if (const std::string exr = render_exr_path(o); !exr.empty()) out.expect_file("-o", exr);
     if (!o.png.empty()) out.expect_file("--png", o.png);
@@ -32,12 +30,12 @@ void expect_outputs(const cli::Options& o, OutputSet& out) {
   }
 }
 
+void expect_scene_inputs(const SceneDesc& desc, OutputSet& out) {
+  for (const std::string& f : desc.files) out.expect_input(desc.file, f);
+}
+
 void write_json_output(OutputSet& out, const std::string& option, const std::string& path, const nlohmann::json& j) {
-  const std::string tmp = out.stage(option, path);
-  std::ofstream f(tmp);
-  f << j.dump(2) << "\n";
-  f.close();
-  if (!f) throw UserError(path, option, "cannot write");
+  out.write_bytes(option, path, j.dump(2) + "\n");
 }
 
 }  // namespace phellem

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/options.h"
+#include "scene/scene_desc.h"
 #include "util/output_set.h"
 
 namespace phellem {
@@ -17,6 +18,8 @@ std::string png_frames_option(const cli::Options& o);
 // Checks and declares every output of o.command: render -o, --png, --stats; turntable and
 // growth every frame of -o (and its PNG), --mp4; simulate the -o folder and --stats.
 void expect_outputs(const cli::Options& o, OutputSet& out);
+// Declares the files the loaded scene names (meshes, images) as inputs: no output replaces one.
+void expect_scene_inputs(const SceneDesc& desc, OutputSet& out);
 // Stages `j` (indented by 2) as the output `path` of `option`.
 void write_json_output(OutputSet& out, const std::string& option, const std::string& path, const nlohmann::json& j);
 

@@ -5,7 +5,9 @@
 #include <chrono>
 #include <cstdio>
 
+#include "cli/outputs.h"
 #include "cli/render_job.h"
+#include "io/image_file.h"
 #include "preview/gl_context.h"
 #include "preview/preview_renderer.h"
 #include "preview/preview_scene.h"
@@ -25,14 +27,11 @@ constexpr float kSnapshotEdgePx = 2.0f;
 
 void write_image(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type, const void* data,
                  const std::vector<std::string>& names = {}) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw UserError(path, "", "cannot write this image format");
   OIIO::ImageSpec spec(w, h, channels, type);
   if (!names.empty()) spec.channelnames = names;
   if (type == OIIO::TypeDesc::FLOAT) spec.attribute("compression", "zip");
   spec.attribute("Software", "Phellem preview");
-  if (!out->open(path, spec) || !out->write_image(type, data) || !out->close())
-    throw UserError(path, "", "cannot write: " + out->geterror());
+  write_image_file(path, path, spec, type, data);
 }
 
 }  // namespace
@@ -65,7 +64,9 @@ int run_preview(const cli::Options& o) {
   OutputSet out;
   out.expect_file("--snapshot", o.png);
   if (!o.exr.empty()) out.expect_file("-o", o.exr);
+  if (!o.scene.empty()) out.expect_input("SCENE", o.scene);
   Loaded l = load(o);
+  expect_scene_inputs(l.desc, out);
   const BarkResults bark = simulate_bark(l.desc, !o.quiet);
   std::string why;
   auto gl = preview::HeadlessGl::create(&why);

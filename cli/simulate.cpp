@@ -13,6 +13,7 @@
 #include "cli/simulate_growth.h"
 #include "cli/simulate_stress.h"
 #include "io/height_image.h"
+#include "io/image_file.h"
 #include "scene/scene_parser.h"
 #include "scene/strip_bark_tree.h"
 #include "util/errors.h"
@@ -48,9 +49,7 @@ void write_field(const bark::FractureField& f, const std::string& path, const st
   // io/height_image reads these back (`phellem compare`).
   spec.attribute(kFieldLengthAttribute, float(f.length));
   spec.attribute(kFieldCircumferenceAttribute, float(f.circumference));
-  auto out = OIIO::ImageOutput::create(tmp);
-  if (!out || !out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, px.data()) || !out->close())
-    throw UserError(path, "-o", "cannot write EXR: " + OIIO::geterror());
+  write_image_file(path, tmp, spec, OIIO::TypeDesc::FLOAT, px.data());
 }
 
 }  // namespace
@@ -60,6 +59,7 @@ int run_simulate(const cli::Options& o) {
   OutputSet out;
   expect_outputs(o, out);
   const SceneDesc desc = load_scene_file(o.scene);
+  expect_scene_inputs(desc, out);
   check_scene_memory(o, desc, 0, 0);
   const std::filesystem::path dir(o.exr);
   double t_sim = 0, t_dress = 0, t_mesh = 0;

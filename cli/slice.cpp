@@ -5,6 +5,7 @@
 #include "bark/growth/ring_section.h"
 #include "cli/memory_check.h"
 #include "cli/outputs.h"
+#include "io/image_file.h"
 #include "scene/growth_run.h"
 #include "scene/mesh_source.h"
 #include "scene/scene_parser.h"
@@ -39,6 +40,7 @@ int run_slice(const cli::Options& o) {
   OutputSet out;
   expect_outputs(o, out);
   const SceneDesc desc = load_scene_file(o.scene);
+  expect_scene_inputs(desc, out);
   const size_t oi = growth_object(o, desc);
   check_scene_memory(o, desc, 0, 0);
   const GrowthRun run = run_growth_object(desc, oi, !o.quiet);
@@ -65,9 +67,7 @@ int run_slice(const cli::Options& o) {
     OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     spec.attribute("ImageDescription", "phellem slice: growth rings, " + std::to_string(img.metres_per_pixel * 1000) + " mm per pixel");
-    auto file = OIIO::ImageOutput::create(tmp);
-    if (!file || !file->open(tmp, spec) || !file->write_image(OIIO::TypeDesc::UINT8, img.rgb.data()) || !file->close())
-      throw UserError(o.exr, "-o", "cannot write PNG: " + OIIO::geterror());
+    write_image_file(o.exr, tmp, spec, OIIO::TypeDesc::UINT8, img.rgb.data());
   });
   out.commit();
   if (!o.quiet)

@@ -2,7 +2,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "util/errors.h"
+#include "io/image_file.h"
 
 namespace phellem {
 
@@ -11,9 +11,7 @@ void write_patch_exr(const HeightField& f, const std::string& path) {
   spec.channelnames = {"Y"};
   spec.attribute("compression", "zip");
   spec.attribute("phellem:px_per_cm", float(f.px_per_cm));
-  auto out = OIIO::ImageOutput::create("exr");
-  if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, f.z.data()) || !out->close())
-    throw UserError(path, "", "cannot write the patch EXR: " + (out ? out->geterror() : OIIO::geterror()));
+  write_image_file(path, path, spec, OIIO::TypeDesc::FLOAT, f.z.data());
 }
 
 }  // namespace phellem

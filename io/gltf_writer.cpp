@@ -5,9 +5,11 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 #include "util/atomic_file.h"
+#include "util/checked_write.h"
 #include "util/errors.h"
 
 namespace phellem {
@@ -111,14 +113,12 @@ void write_glb(const std::string& path, const std::string& mesh_name, const GlbM
   scene.nodes = {0};
   model.scenes.push_back(scene);
   model.defaultScene = 0;
-  write_atomically(path, [&](const std::string& tmp) {
-    tinygltf::TinyGLTF gltf;
-    // tinygltf reports success even when it could not open the file: check that it is there.
-    std::error_code ec;
-    if (!gltf.WriteGltfSceneToFile(&model, tmp, false, true, false, true) || !std::filesystem::is_regular_file(tmp, ec) ||
-        std::filesystem::file_size(tmp, ec) == 0)
-      throw UserError(path, "write", "cannot write glTF binary");
-  });
+  // Encoded in memory: tinygltf's own file writer reports success when it could not write.
+  std::ostringstream bytes_out;
+  tinygltf::TinyGLTF gltf;
+  if (!gltf.WriteGltfSceneToStream(&model, bytes_out, false, true)) throw UserError(path, "write", "cannot encode the glTF binary");
+  const std::string bytes = std::move(bytes_out).str();
+  write_atomically(path, [&](const std::string& tmp) { write_file_checked(path, tmp, bytes); });
 }
 
 }  // namespace phellem

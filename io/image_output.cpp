@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "io/image_file.h"
 #include "util/atomic_file.h"
 #include "util/errors.h"
 #include "util/math.h"
@@ -56,13 +57,7 @@ void write_exr(const Film& f, const std::string& path) {
     o[16] = f.crack[p * 2 + 1];
     o[17] = f.displacement[p];
   }
-  write_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw UserError(path, "create", "cannot create EXR writer: " + OIIO::geterror());
-    if (!out->open(tmp, spec)) throw UserError(path, "open", "cannot open for writing: " + out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, px.data())) throw UserError(path, "write", "write failed: " + out->geterror());
-    if (!out->close()) throw UserError(path, "close", "close failed: " + out->geterror());
-  });
+  write_atomically(path, [&](const std::string& tmp) { write_image_file(path, tmp, spec, OIIO::TypeDesc::FLOAT, px.data()); });
 }
 
 std::vector<std::string> ocio_views() {
@@ -125,13 +120,7 @@ void write_png(const Film& f, const std::string& path, const std::string& view) 
   OIIO::ImageSpec spec(f.width, f.height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");
   spec.attribute("Software", "Phellem (OCIO view: " + view + ")");
-  write_atomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw UserError(path, "create", "cannot create PNG writer: " + OIIO::geterror());
-    if (!out->open(tmp, spec)) throw UserError(path, "open", "cannot open for writing: " + out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::UINT8, px.data())) throw UserError(path, "write", "write failed: " + out->geterror());
-    if (!out->close()) throw UserError(path, "close", "close failed: " + out->geterror());
-  });
+  write_atomically(path, [&](const std::string& tmp) { write_image_file(path, tmp, spec, OIIO::TypeDesc::UINT8, px.data()); });
 }
 
 }  // namespace phellem

@@ -7,6 +7,7 @@
 
 #include "scene/scene_parser.h"
 #include "util/atomic_file.h"
+#include "util/checked_write.h"
 #include "util/errors.h"
 
 namespace phellem::preview {
@@ -28,11 +29,8 @@ std::string write_view_scene(const std::string& scene_path, const CameraDesc& c)
   cam["fov_deg"] = c.fov_deg;
   const std::filesystem::path p(scene_path);
   const std::string out = scene_path.empty() ? "default_view.json" : (p.parent_path() / (p.stem().string() + "_view.json")).string();
-  write_atomically(out, [&](const std::string& tmp) {
-    std::ofstream f(tmp);
-    f << j.dump(2) << "\n";
-    if (!f) throw std::runtime_error("cannot write " + tmp);
-  });
+  const std::string bytes = j.dump(2) + "\n";
+  write_atomically(out, [&](const std::string& tmp) { write_file_checked(out, tmp, bytes); });
   return out;
 }
 

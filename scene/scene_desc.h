@@ -154,6 +154,9 @@ struct ObjectDesc {
 struct SceneDesc {
   std::string file;  // "<default scene>" for the embedded one
   std::filesystem::path base_dir;
+  // The files the scene names as meshes, environment maps and textures, resolved (outputs must
+  // not replace them: OutputSet::expect_input).
+  std::vector<std::string> files;
   CameraDesc camera;
   RenderDesc render;
   std::vector<LightDesc> lights;

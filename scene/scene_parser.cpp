@@ -10,6 +10,7 @@
 #include "io/builtin_files.h"
 #include "scene/json_reader.h"
 #include "scene/procedural_mesh_desc.h"
+#include "util/output_set.h"
 
 namespace phellem {
 
@@ -20,6 +21,7 @@ namespace fs = std::filesystem;
 struct Ctx {
   std::string file;
   fs::path base_dir;
+  std::vector<std::string>* files;  // every file resolved: SceneDesc::files
 
   // A file name against the scene's folder. `builtin`: a "builtin:<name>" file
   // (io/builtin_files.h) may stand for it, as it may wherever OpenImageIO reads the image.
@@ -35,6 +37,7 @@ struct Ctx {
     if (p.is_relative()) p = base_dir / p;
     p = p.lexically_normal();
     if (must_exist && !fs::is_regular_file(p)) v.fail("file not found: " + p.string());
+    files->push_back(p.string());
     return p.string();
   }
 };
@@ -387,7 +390,14 @@ TreeDesc parse_tree(const Ctx& c, JsonObject& o, uint64_t seed, std::shared_ptr<
 ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
   ObjectDesc d;
   d.where = loc(c, o.path());
-  d.name = o.string("name", "");
+  if (auto v = o.get("name")) {
+    d.name = v->string();
+    // `phellem simulate` names its output files after objects: a name must stay in its folder.
+    if (const std::string why = d.name.empty() ? "" : file_name_problem(d.name); !why.empty())
+      v->fail("the name \"" + printable(d.name) + "\" " + why +
+              "; names are used as file names in the output folder (no '/', no control character, no leading '.', 1 to " +
+              std::to_string(kMaxDerivedNameBytes) + " bytes)");
+  }
   const std::string type = o.string("type");
   if (auto m = o.get("material")) {
     d.material = m->string();
@@ -513,8 +523,8 @@ void resolve_growth_obstacles(SceneDesc& s) {
 
 SceneDesc parse_scene(const std::string& text, const std::string& file, const fs::path& base_dir) {
   const nlohmann::json j = parse_json_text(text, file);
-  Ctx c{file, base_dir};
   SceneDesc s;
+  Ctx c{file, base_dir, &s.files};
   s.file = file;
   s.base_dir = base_dir;
   JsonObject root(j, file, "");

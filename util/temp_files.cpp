@@ -171,6 +171,8 @@ TerminationDeferral::TerminationDeferral() {
   for (;;) pause();  // a signal is ending the process: commit nothing
 }
 
+bool TerminationDeferral::signal_pending() const { return g_deferred.load() != 0; }
+
 TerminationDeferral::~TerminationDeferral() {
   g_phase.store(kRunning);
   if (const int sig = g_deferred.exchange(0)) on_termination(sig);

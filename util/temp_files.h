@@ -50,6 +50,8 @@ class TerminationDeferral {
   ~TerminationDeferral();
   TerminationDeferral(const TerminationDeferral&) = delete;
   TerminationDeferral& operator=(const TerminationDeferral&) = delete;
+  // Whether a termination signal arrived meanwhile: the process ends by it when this goes.
+  bool signal_pending() const;
 };
 
 }  // namespace phellem
