@@ -1,4 +1,4 @@
-// A run killed by SIGTERM or SIGINT while it writes its outputs removes its temporaries, leaves
+// A run killed by SIGTERM, SIGINT or SIGHUP while it writes its outputs removes its temporaries, leaves
 // the earlier outputs as they were (never a new EXR beside an old PNG) and dies by the signal.
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Starts phellem with `args`, SIGINT and SIGTERM at their default action (a test runner may
+// Starts phellem with `args`, SIGINT, SIGTERM and SIGHUP at their default action (a test runner may
 // start us with SIGINT ignored), output to /dev/null. Returns its pid.
 pid_t start_phellem(const std::vector<std::string>& args) {
   std::vector<std::string> argv_s = {PHELLEM_BINARY};
@@ -36,6 +36,7 @@ pid_t start_phellem(const std::vector<std::string>& args) {
   sigemptyset(&defaults);
   sigaddset(&defaults, SIGINT);
   sigaddset(&defaults, SIGTERM);
+  sigaddset(&defaults, SIGHUP);
   sigemptyset(&none);
   posix_spawnattr_setsigdefault(&attr, &defaults);
   posix_spawnattr_setsigmask(&attr, &none);
@@ -107,9 +108,10 @@ TEST_P(InterruptedRun, LeavesNoTemporaryAndTheEarlierOutputsWhole) {
 
 INSTANTIATE_TEST_SUITE_P(Signals, InterruptedRun,
                          ::testing::Values(Kill{SIGTERM, ".exr"}, Kill{SIGTERM, ".png"}, Kill{SIGINT, ".exr"},
-                                           Kill{SIGINT, ".png"}),
+                                           Kill{SIGINT, ".png"}, Kill{SIGHUP, ".exr"}, Kill{SIGHUP, ".png"}),
                          [](const ::testing::TestParamInfo<Kill>& i) {
-                           return std::string(i.param.signal == SIGTERM ? "Sigterm" : "Sigint") + "While" +
+                           const int s = i.param.signal;
+                           return std::string(s == SIGTERM ? "Sigterm" : s == SIGINT ? "Sigint" : "Sighup") + "While" +
                                   (std::string(i.param.when) == ".exr" ? "Exr" : "Png");
                          });
 
