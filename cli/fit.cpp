@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <optional>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
+#include "cli/fit_memory.h"
 #include "cli/fit_report.h"
 #include "compare/common_scale.h"
 #include "compare/compare_inputs.h"
@@ -75,6 +77,28 @@ HeightField photo_field(const cli::Options& o, const HeightImage& img) {
 
 FitModel model_of(const std::string& name) { return name == "stress" ? FitModel::stress : FitModel::strips; }
 
+// The photo's size at scale `s` (at most its own), rounded up as `resample` rounds it.
+PatchSize at_scale(const HeightField& photo, double s) {
+  const double f = std::min(1.0, s / photo.px_per_cm);
+  auto n = [&](int pixels) { return std::max(1, int(std::ceil(pixels * f - 1e-9))); };
+  return {n(photo.width), n(photo.height), std::min(s, photo.px_per_cm)};
+}
+
+// What the stages below hold at their peaks (cli/fit_memory.h).
+FitMemoryRequest memory_request(const cli::Options& o, const HeightField& photo) {
+  FitMemoryRequest r;
+  r.photo = o.scene;
+  r.full = {photo.width, photo.height, photo.px_per_cm};
+  r.eval = at_scale(photo, kEvalPxPerCm);
+  r.final = at_scale(photo, kFinalPxPerCm);
+  r.stress = model_of(o.model) == FitModel::stress;
+  // The choice simulates its points on every thread (strips only); the relief stage one field
+  // per seed.
+  const int threads = o.threads.value_or(tbb::this_task_arena::max_concurrency());
+  r.final_parallel = r.stress ? 0 : std::clamp(threads, kFinalSeeds, kChoicePoints * kFinalSeeds);
+  return r;
+}
+
 }  // namespace
 
 int run_fit(const cli::Options& o) {
@@ -90,6 +114,7 @@ int run_fit(const cli::Options& o) {
     out.expect_file("-o", f);
   HeightImage photo_image = read_height_image(o.scene);
   const HeightField photo = photo_field(o, photo_image);
+  check_fit_memory(memory_request(o, photo), o.memory_limit);
   // The photo as `phellem compare` reads it (with its albedo: a missing, unreadable or
   // mismatched one is refused here, before any work).
   const LoadedInput photo_in = load_input(CompareSource{"A", o.scene, o.scale, o.albedo}, std::move(photo_image));

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "cli/slice.h"
 #include "io/film.h"
 #include "renderer/film_memory.h"
 #include "scene/memory_budget.h"
@@ -11,6 +12,16 @@ namespace phellem {
 
 namespace {
 
+// The section image of `slice` (bark/growth/ring_section.cpp): RGB floats while it is painted,
+// a byte mask per ring or obstacle, and the 8-bit RGB copy made at the end, 16 bytes a pixel.
+constexpr double kSectionBytesPerPixel = 16;
+
+MemoryItem section_item(int width, int height) {
+  const std::string wh = std::to_string(width) + "x" + std::to_string(height);
+  return {"the " + wh + " section image (RGB floats while painted, and its 8-bit copy)",
+          double(width) * double(height) * kSectionBytesPerPixel, "", "--res", "lower --res (now " + wh + ")"};
+}
+
 MemoryRequest request(const cli::Options& o, const SceneDesc& desc, int width, int height) {
   MemoryRequest r;
   if (o.command == "simulate" || o.command == "slice") {
@@ -19,6 +30,7 @@ MemoryRequest request(const cli::Options& o, const SceneDesc& desc, int width, i
     r.field_width = o.command == "slice" ? 0 : o.width.value_or(0);
     r.field_height = o.command == "slice" ? 0 : o.height.value_or(0);
     r.meshes = !o.no_mesh && o.command == "simulate";
+    if (o.command == "slice") r.section = section_item(width, height);
     return r;
   }
   r.command = o.command == "growth" ? MemoryCommand::Growth : MemoryCommand::Render;
@@ -55,7 +67,9 @@ void check_scene_memory(const cli::Options& o, const SceneDesc& desc, int width,
 
 int run_memory_estimate(const cli::Options& o) {
   const SceneDesc desc = o.scene.empty() ? default_scene() : load_scene_file(o.scene);
-  const int width = o.width.value_or(desc.render.width), height = o.height.value_or(desc.render.height);
+  const int fallback_w = o.command == "slice" ? kSliceDefaultSize : desc.render.width;
+  const int fallback_h = o.command == "slice" ? kSliceDefaultSize : desc.render.height;
+  const int width = o.width.value_or(fallback_w), height = o.height.value_or(fallback_h);
   const MemoryBudget budget = memory_budget(o.memory_limit);
   const MemoryEstimate e = estimate_memory(desc, request(o, desc, width, height));
   std::cout << describe(e, budget);

@@ -9,7 +9,7 @@
 namespace phellem {
 
 // Throws UserError, at the knob of the largest part, when the command would not fit. `width`
-// × `height`: the film (render, turntable, growth; ignored by simulate).
+// × `height`: the film (render, turntable, growth), the section image (slice); ignored by simulate.
 void check_scene_memory(const cli::Options& o, const SceneDesc& desc, int width, int height);
 // `--memory-estimate`: prints the estimate of the command, stage by stage, and the budget;
 // exit code 0 when it fits (else the refusal, exit 2).

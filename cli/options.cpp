@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <set>
 
+#include "preview/edge_length.h"
 #include "scene/memory_budget.h"
 #include "util/errors.h"
 
@@ -93,13 +94,15 @@ std::string usage() {
          "  phellem slice SCENE.json -o SECTION.png [--object NAME] [--plane x|y|z=VALUE] [--res WxH] [--quiet]\n"
          "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--max-level N]\n"
          "                 [--edge-px P] [--frames N] [--quiet]\n"
-         "  render, turntable, growth, simulate and slice also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
-         "  physical memory) and [--memory-estimate] (print the memory each stage needs, and stop).\n"
+         "  render, turntable, growth, simulate, slice and fit also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
+         "  physical memory; never above the address space `ulimit -v` leaves), and all but fit [--memory-estimate] (print the\n"
+         "  memory each stage needs, and stop).\n"
          "  phellem --help | --version\n"
          "Ranges: --spp N in [1, 1048576] (render.spp), --seed S in [0, 18446744073709551615]\n"
          "(render.seed), --res WxH each in [1, 32768], --threads N in [1, 1024], --frames N in\n"
-         "[1, 100000], --degrees D in [-1000000, 1000000] (default 360). render.max_depth, only in\n"
-         "the scene, lies in [1, 1024].\n"
+         "[1, 100000], --degrees D in [-1000000, 1000000] (default 360), --edge-px P in [0.5, 1000]\n"
+         "(default 6 in the window, 2 in a snapshot). render.max_depth, only in the scene, lies in\n"
+         "[1, 1024].\n"
          "Without SCENE.json, `render` renders the embedded default scene. See README.md and\n"
          "docs/scene-format.md.\n";
 }
@@ -129,8 +132,13 @@ Options parse(const std::vector<std::string>& args) {
       o.png = value();
     else if (a == "--max-level" && o.command == "preview")
       o.max_level = int(integer(a, value(), 1, 64));
-    else if (a == "--edge-px" && o.command == "preview")
-      o.edge_px = positive(a, value(), 1000, "the micro-edge length near cracks in pixels");
+    else if (a == "--edge-px" && o.command == "preview") {
+      const std::string v = value();
+      o.edge_px = positive(a, v, preview::kMaxEdgePx, "the micro-edge length near cracks in pixels");
+      if (*o.edge_px < preview::kMinEdgePx)
+        bad(a, "must be at least 0.5 (pixels; at most 1000): shorter micro-edges show nothing more at one sample a pixel, "
+               "and cost 1/P² the triangles, got " + v);
+    }
     else if (a == "--frames" && o.command == "preview")
       o.frames = int(integer(a, value(), 1, 100000));
     else if (a == "--object" && o.command == "slice")

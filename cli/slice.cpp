@@ -42,7 +42,8 @@ int run_slice(const cli::Options& o) {
   const SceneDesc desc = load_scene_file(o.scene);
   expect_scene_inputs(desc, out);
   const size_t oi = growth_object(o, desc);
-  check_scene_memory(o, desc, 0, 0);
+  const int width = o.width.value_or(kSliceDefaultSize), height = o.height.value_or(kSliceDefaultSize);
+  check_scene_memory(o, desc, width, height);
   const GrowthRun run = run_growth_object(desc, oi, !o.quiet);
   bark::SectionPlane plane;
   if (o.plane_axis >= 0) {
@@ -58,7 +59,7 @@ int run_slice(const cli::Options& o) {
     const ObjectDesc& ob = desc.objects[k];
     if (ob.type == ObjectType::Mesh) obstacles.push_back(object_trimesh(ob));
   }
-  const bark::SectionImage img = bark::draw_ring_section(run.rings, obstacles, plane, o.width.value_or(1024), o.height.value_or(1024));
+  const bark::SectionImage img = bark::draw_ring_section(run.rings, obstacles, plane, width, height);
   if (img.segments == 0)
     throw UserError("<command line>", "--plane",
                     std::string("the plane ") + char('x' + plane.axis) + "=" + std::to_string(plane.value) +

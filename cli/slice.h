@@ -9,6 +9,9 @@
 
 namespace phellem {
 
+// The section image's size without --res (and never smaller than 16: draw_ring_section's floor).
+inline constexpr int kSliceDefaultSize = 1024;
+
 int run_slice(const cli::Options& o);
 
 }  // namespace phellem

@@ -27,6 +27,22 @@ std::vector<float> resize_pixels(const std::vector<float>& data, int width, int 
   return out;
 }
 
+struct AxisSize {
+  int pixels = 0;
+  double px_per_cm = 0;
+};
+
+// An axis of `pixels` at `own` px/cm brought to `target` (never enlarged). The size is rounded
+// up, so the scale it gives is never below the target: rounded to the nearest, it fell up to
+// half a pixel short, and two inputs declared at 2 and 4.1 px/cm were measured at 1.999 and
+// refused for "the scale is 2 px/cm; compare needs at least 2 px/cm".
+AxisSize shrunk(int pixels, double own, double target) {
+  if (target >= own) return {pixels, own};
+  const int n = std::max(1, int(std::ceil(pixels * (target / own) - 1e-9)));  // 1e-9: 128.0000001 stays 128
+  // At least the target: n ≥ pixels·target/own up to the 1e-9 and the rounding of the product.
+  return {n, std::max(target, own * n / pixels)};
+}
+
 }  // namespace
 
 // Plan §3.0: both inputs are measured at the coarser scale; the finer one is shrunk, neither
@@ -38,16 +54,14 @@ HeightField resample(const HeightField& field, double px_per_cm_x, double px_per
     throw std::invalid_argument("resample: scales must be positive");
   // Each axis to the target on its own (a FractureField EXR has different scales across and
   // along); never upsample.
-  const double fx = std::min(1.0, px_per_cm / px_per_cm_x), fy = std::min(1.0, px_per_cm / px_per_cm_y);
-  const int out_w = std::max(1, int(std::lround(field.width * fx)));
-  const int out_h = std::max(1, int(std::lround(field.height * fy)));
+  const AxisSize x = shrunk(field.width, px_per_cm_x, px_per_cm), y = shrunk(field.height, px_per_cm_y, px_per_cm);
   HeightField out;
-  out.width = out_w;
-  out.height = out_h;
-  out.z = resize_pixels(field.z, field.width, field.height, 1, out_w, out_h);
+  out.width = x.pixels;
+  out.height = y.pixels;
+  out.z = resize_pixels(field.z, field.width, field.height, 1, out.width, out.height);
   // The true scale after rounding the size: the mean of the two axes' (they differ by at most
-  // half a pixel over the image).
-  out.px_per_cm = 0.5 * (px_per_cm_x * out_w / field.width + px_per_cm_y * out_h / field.height);
+  // a pixel over the image).
+  out.px_per_cm = 0.5 * (x.px_per_cm + y.px_per_cm);
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "compare/compare_inputs.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <tbb/parallel_invoke.h>
 
 #include "compare/common_scale.h"
@@ -74,14 +75,31 @@ PreparedInput at_scale(const LoadedInput& input, double px_per_cm) {
   return p;
 }
 
+namespace {
+
+// analyse_fissures, whose refusals of a shrunk input also say what it was before: the sizes they
+// quote are at the common scale, not the file's.
+FissureAnalysis analyse_prepared(const PreparedInput& p, const LoadedInput& in) {
+  try {
+    return analyse_fissures(p.field, p.albedo ? &*p.albedo : nullptr, p.source.path);
+  } catch (const UserError& e) {
+    if (p.field.width == in.image.width && p.field.height == in.image.height) throw;
+    char scale[64];
+    std::snprintf(scale, sizeof scale, "%.3g px/cm", std::max(in.px_per_cm_x, in.px_per_cm_y));
+    throw UserError(e.file(), e.where(),
+                    e.detail() + " (the file's " + size_text(in.image.width, in.image.height) + " px at " + scale +
+                        " shrunk to the common scale, the coarser input's)");
+  }
+}
+
+}  // namespace
+
 CompareReport compare_inputs(const LoadedInput& a, const LoadedInput& b) {
   CompareReport r;
   r.px_per_cm = common_scale(a, b);
   r.a = at_scale(a, r.px_per_cm);
   r.b = at_scale(b, r.px_per_cm);
-  tbb::parallel_invoke(
-      [&] { r.analysis_a = analyse_fissures(r.a.field, r.a.albedo ? &*r.a.albedo : nullptr, r.a.source.path); },
-      [&] { r.analysis_b = analyse_fissures(r.b.field, r.b.albedo ? &*r.b.albedo : nullptr, r.b.source.path); });
+  tbb::parallel_invoke([&] { r.analysis_a = analyse_prepared(r.a, a); }, [&] { r.analysis_b = analyse_prepared(r.b, b); });
   r.comparison = compare_fissures(r.analysis_a.stats, r.analysis_b.stats);
   return r;
 }

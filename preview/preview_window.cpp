@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "preview/edge_length.h"
 #include "preview/orbit_camera.h"
 #include "preview/preview_renderer.h"
 #include "scene/camera_model.h"
@@ -57,7 +58,7 @@ void on_key(GLFWwindow* w, int key, int, int action, int) {
       break;
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:  // finer: shorter micro-edges
-      s.settings.target_near_px = std::max(0.5f, s.settings.target_near_px / 1.5f);
+      s.settings.target_near_px = std::max(kMinEdgePx, s.settings.target_near_px / 1.5f);
       s.settings.target_far_px = std::max(4.0f, s.settings.target_far_px / 1.5f);
       break;
     case GLFW_KEY_MINUS:

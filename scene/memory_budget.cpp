@@ -1,5 +1,6 @@
 #include "scene/memory_budget.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -47,7 +48,20 @@ double parse_memory_size(const std::string& text) {
   return x * it->second;
 }
 
-MemoryBudget memory_budget(const std::string& option) {
+namespace {
+
+// Under an address-space limit (`ulimit -v`) an allocation beyond it fails (bad_alloc) whatever
+// the budget says, so the budget is at most what the process may still map. Conservative: the
+// estimates count resident bytes, and the program's own mappings are in both.
+MemoryBudget within_address_space(MemoryBudget b) {
+  const AddressSpace a = address_space();
+  const double left = std::max(0.0, a.limit - a.mapped);
+  if (left >= b.bytes) return b;
+  return {left, b.source + ", capped at the " + format_bytes(left) + " of address space left under this process's limit of " +
+                    format_bytes(a.limit) + " (ulimit -v)"};
+}
+
+MemoryBudget configured_budget(const std::string& option) {
   const char* env = std::getenv("PHELLEM_MEMORY_LIMIT");
   const bool from_option = !option.empty();
   if (from_option || (env && *env)) {
@@ -66,6 +80,10 @@ MemoryBudget memory_budget(const std::string& option) {
                 kDefaultMemoryShare * 100, format_bytes(physical).c_str());
   return {kDefaultMemoryShare * physical, source};
 }
+
+}  // namespace
+
+MemoryBudget memory_budget(const std::string& option) { return within_address_space(configured_budget(option)); }
 
 std::string format_bytes(double bytes) {
   char buf[64];

@@ -18,7 +18,9 @@ struct MemoryBudget {
 // powers of 1024. Throws std::invalid_argument.
 double parse_memory_size(const std::string& text);
 // `option`: the value of --memory-limit (empty: not given), else PHELLEM_MEMORY_LIMIT, else
-// kDefaultMemoryShare of physical memory. A bad value is a UserError at its option / variable.
+// kDefaultMemoryShare of physical memory; never more than the address space the process may
+// still map under RLIMIT_AS (`ulimit -v`), where allocating more fails in bad_alloc. A bad value
+// is a UserError at its option / variable.
 MemoryBudget memory_budget(const std::string& option);
 inline constexpr double kDefaultMemoryShare = 0.75;
 

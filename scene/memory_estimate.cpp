@@ -487,6 +487,8 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
                            {base_item(), stress_cost(o, oi).item}});
     }
     if (e.moments.empty()) e.moments.push_back({"simulating", {base_item()}});
+    // slice: the growth is over (its tetrahedra freed) when the section is drawn.
+    if (req.section.bytes > 0) e.moments.push_back({"drawing the section", {base_item(), req.section}});
     return e;
   }
 

@@ -39,6 +39,7 @@ struct MemoryRequest {
   MemoryItem film;                        // render, growth: the film and its outputs (renderer/film_memory.h)
   int field_width = 0, field_height = 0;  // simulate --res: every fracture field's size (0: the scene's)
   bool meshes = true;                     // simulate: the bark meshes are written (no --no-mesh)
+  MemoryItem section;                     // slice: the section image, drawn after the growth (0 bytes: none)
 };
 
 struct MemoryEstimate {

@@ -1,8 +1,10 @@
 #include "util/memory.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <fstream>
+#include <limits>
 #include <string>
 
 namespace phellem {
@@ -28,6 +30,17 @@ double physical_memory() {
     if (c >> limit && limit > 0 && limit < total) total = limit;
   }
   return total;
+}
+
+AddressSpace address_space() {
+  AddressSpace a;
+  rlimit r{};
+  a.limit = getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY ? double(r.rlim_cur)
+                                                                        : std::numeric_limits<double>::infinity();
+  std::ifstream statm("/proc/self/statm");  // the first figure: pages mapped
+  double pages = 0;
+  if (statm >> pages) a.mapped = pages * double(sysconf(_SC_PAGE_SIZE));
+  return a;
 }
 
 }  // namespace phellem

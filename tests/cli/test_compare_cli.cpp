@@ -121,6 +121,41 @@ TEST(CompareCli, EveryMistakeIsAClearErrorWithExitCode2) {
   }
 }
 
+// Any ratio of the two scales is allowed (docs/compare.md, "Common scale"): the finer input is
+// shrunk to the coarser scale and only the checks at that scale refuse. The shrunk size was
+// rounded to the nearest pixel, so an input at 4.1 px/cm against one at 2 (the lowest scale
+// allowed) was measured at 1.999 px/cm and refused as "the scale is 2 px/cm; compare needs at
+// least 2 px/cm". Rounded up, the boundaries are where the documentation puts them.
+TEST(CompareCli, AnyScaleRatioIsAllowedAndTheCommonScaleIsMeasuredAsDeclared) {
+  const std::string dir = test::temp_dir("compare_ratio");
+  const std::string wide = dir + "/wide.png", small = dir + "/small.png";
+  test::write_height_png16(wide, test::fissured_bark(1001 / 4.1, 1001 / 4.1, 4.1, 5));  // 1001² px
+  test::write_height_png16(small, test::fissured_bark(25.6, 25.6, 10, 5));              // 256² px
+  auto compare = [](const std::string& a, const std::string& b, const std::string& scales) {
+    return test::run_phellem_limited("compare " + a + " " + b + " " + scales, 4096, 120);
+  };
+  // The common scale at the 2 px/cm minimum: accepted, from a ratio of 2.05 or of 1.05.
+  for (const char* scales : {"--scale A=4.1 --scale B=2", "--scale A=2.1 --scale B=2"}) {
+    const auto r = compare(wide, wide, scales);
+    EXPECT_EQ(r.exit_code, 0) << scales << "\n" << r.output;
+  }
+  // Just below it: refused, with the minimum.
+  const auto coarse = compare(wide, wide, "--scale A=4.1 --scale B=1.99");
+  EXPECT_EQ(coarse.exit_code, 2) << coarse.output;
+  EXPECT_NE(coarse.output.find("compare needs at least 2 px/cm to see the fissures"), std::string::npos) << coarse.output;
+  // A 256 px side at 10 px/cm halved keeps 128 px: accepted; at 4.96 px/cm it keeps 127: refused,
+  // saying what the file was before it was shrunk.
+  const auto halved = compare(small, small, "--scale A=10 --scale B=5");
+  EXPECT_EQ(halved.exit_code, 0) << halved.output;
+  const auto under = compare(small, small, "--scale A=10 --scale B=4.96");
+  EXPECT_EQ(under.exit_code, 2) << under.output;
+  EXPECT_NE(under.output.find("the image is 127×127 px"), std::string::npos) << under.output;
+  EXPECT_NE(under.output.find("compare needs at least 128 px and 20 cm on each side (the file's 256×256 px at 10 px/cm shrunk "
+                              "to the common scale, the coarser input's)"),
+            std::string::npos)
+      << under.output;
+}
+
 TEST(CompareCli, AFailedRunLeavesTheEarlierReportUntouched) {
   const auto& in = inputs();
   const std::string report = in.dir + "/kept.html", json = in.dir + "/kept.json";

@@ -30,10 +30,10 @@ std::string stripes_png(const std::string& dir) {
   return path;
 }
 
-// 256² of V-shaped grooves every 32 px: heights over a continuous range.
-std::string grooves_png(const std::string& dir) {
-  const std::string path = dir + "/grooves.png";
-  const int W = 256, H = 256;
+// size² of V-shaped grooves every 32 px: heights over a continuous range.
+std::string grooves_png(const std::string& dir, int size = 256) {
+  const std::string path = dir + "/grooves" + std::to_string(size) + ".png";
+  const int W = size, H = size;
   std::vector<unsigned char> px(size_t(W) * H);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) px[size_t(y) * W + x] = (unsigned char)(40 + 160 * std::min(1.0, std::abs(x % 32 - 16) / 10.0));
@@ -115,6 +115,30 @@ TEST(FitCli, AlbedoMistakesAreFoundBeforeAnyWork) {
   const std::string albedo = flat_rgb_png(d + "/albedo.png", 256, 256);
   const auto t0 = std::chrono::steady_clock::now();
   expect_error(fit + albedo + " --time-budget 600", albedo + ": --albedo: the height map " + img + " is flat between its percentiles");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 30.0);
+  EXPECT_FALSE(std::filesystem::exists(d + "/out"));
+}
+
+// The fit's patches, their statistics and the report are estimated from the photo's size and
+// scale before any work (cli/fit_memory.h): over the budget, the fit is refused at the photo
+// with the budget named and what to change. It used to ignore --memory-limit, and under an
+// address-space limit to die in std::bad_alloc (exit 1) in its first evaluations.
+TEST(FitCli, AFitOverTheMemoryBudgetIsRefusedBeforeAnyWork) {
+  const std::string d = test::temp_dir("fit_cli_memory");
+  const std::string img = grooves_png(d, 1024);
+  const std::string fit = "fit " + img + " --scale 10 --model strips -o " + d + "/out --max-evals 2";
+  const auto t0 = std::chrono::steady_clock::now();
+  expect_error(fit + " --memory-limit 200M", img + ": HEIGHT_IMAGE: needs about ");
+  const auto r = test::run_phellem(fit + " --memory-limit 200M");
+  EXPECT_NE(r.output.find("allowed (--memory-limit 200M); fit a smaller crop of the photo (now 1024×1024 px at 10 px/cm)"),
+            std::string::npos)
+      << r.output;
+  // Under a 900 MiB address-space limit (about 400 MiB left once the libraries and threads are
+  // mapped) and no --memory-limit: refused, never bad_alloc.
+  const auto limited = test::run_phellem_limited(fit, 900, 60);
+  EXPECT_EQ(limited.exit_code, 2) << limited.output;
+  EXPECT_NE(limited.output.find("phellem: error: " + img + ": HEIGHT_IMAGE: needs about "), std::string::npos) << limited.output;
+  EXPECT_NE(limited.output.find("(ulimit -v)"), std::string::npos) << limited.output;
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 30.0);
   EXPECT_FALSE(std::filesystem::exists(d + "/out"));
 }

@@ -170,6 +170,49 @@ TEST(MemoryCli, TheBudgetDefaultsToAShareOfPhysicalMemory) {
   EXPECT_NE(env.output.find("PHELLEM_MEMORY_LIMIT: expected a memory size"), std::string::npos) << env.output;
 }
 
+// A small closed log growing in 4 steps, for `slice`.
+std::string growing_log(const std::string& dir) {
+  const std::string path = dir + "/log.json";
+  test::write_text(path, R"({"objects": [{"type": "mesh", "name": "trunk", "procedural": {"shape": "log", "triangles": 600,
+    "radius": 0.1, "height": 0.3}, "growth": {"steps": 4, "years": 10, "age_scale": 10, "weibull_c": 1, "thickness": 0.03}}]})");
+  return path;
+}
+
+// slice --res 32768x32768: the section image alone is 16 GiB (RGB floats while painted, then
+// its 8-bit copy). It was left out of slice's estimate: the log grew, and the drawing died in
+// bad_alloc (exit 1) under the 8 GiB address-space limit.
+TEST(MemoryCli, A32768SquareSliceIsRefusedAtRes) {
+  const std::string dir = test::temp_dir("memory_slice");
+  const std::string log = growing_log(dir), out = " -o " + dir + "/s.png";
+  const Outcome r = run("slice " + log + out + " --res 32768x32768 --memory-limit 500M");
+  expect_refused(r, "--res: needs about 16.0 GiB for the 32768x32768 section image");
+  EXPECT_NE(r.output.find("allowed (--memory-limit 500M); lower --res (now 32768x32768)"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/s.png"));
+  // The estimate shows the drawing as a stage of its own, at the default 1024x1024 too.
+  const Outcome e = run("slice " + log + out + " --memory-estimate");
+  EXPECT_EQ(e.exit_code, 0) << e.output;
+  EXPECT_NE(e.output.find("drawing the section: "), std::string::npos) << e.output;
+  EXPECT_NE(e.output.find("the 1024x1024 section image"), std::string::npos) << e.output;
+}
+
+// Under `ulimit -v` an allocation past the limit fails whatever the budget says, so the budget
+// is capped at the address space the process may still map: with no --memory-limit, a 8192²
+// slice (1 GiB of section image) under a 1 GiB limit is refused at --res, naming the limit,
+// where it used to grow the log and die in bad_alloc (exit 1).
+TEST(MemoryCli, TheBudgetIsCappedByTheAddressSpaceLimit) {
+  const std::string dir = test::temp_dir("memory_ulimit");
+  const std::string log = growing_log(dir);
+  const auto r = test::run_phellem_limited("slice " + log + " -o " + dir + "/s.png --res 8192x8192", 1024, 60);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("phellem: error: <command line>: --res: needs about 1.0 GiB for the 8192x8192 section image", 0), 0u)
+      << r.output;
+  EXPECT_NE(r.output.find("of address space left under this process's limit of 1.0 GiB (ulimit -v)"), std::string::npos)
+      << r.output;
+  // The same fits without the limit (a 1024x1024 section under it too).
+  const auto small = test::run_phellem_limited("slice " + log + " -o " + dir + "/s.png --res 1024x1024", 1024, 60);
+  EXPECT_EQ(small.exit_code, 0) << small.output;
+}
+
 // Every scene in scenes/ fits the default budget for every command that takes it, and its
 // estimate is printed stage by stage.
 TEST(MemoryCli, TypicalScenesAreNotRefused) {

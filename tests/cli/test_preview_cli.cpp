@@ -4,6 +4,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 
@@ -86,6 +87,29 @@ TEST(PreviewCli, MistakesAreExit2WithTheirReason) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("phellem: error: <command line>: preview: no display"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("--snapshot OUT.png renders a frame without one"), std::string::npos) << r.output;
+}
+
+// --edge-px below half a pixel was accepted (the range was (0, 1000]) and cost 1/P² the
+// triangles: at 0.01 a 32×24 snapshot ran for minutes. Shorter micro-edges show nothing more
+// at one sample a pixel, so the range is [0.5, 1000] (the window's finer key stops there too),
+// and a snapshot at 0.5 takes seconds (of the default scene: a 15 ms frame of 31,374
+// triangles after a minute of simulating its bark). Under a time limit, so that the old code
+// fails.
+TEST(PreviewCli, MicroEdgesShorterThanHalfAPixelAreRefused) {
+  const std::string dir = test::temp_dir("preview_edge");
+  const std::string snapshot = " " + scene_file(dir) + " --snapshot " + dir + "/s.png --res 32x24";
+  for (const char* tiny : {"0.01", "0.49", "1e-30"}) {
+    const auto r = test::run_phellem_limited("preview" + snapshot + " --edge-px " + tiny, 8192, 60);
+    EXPECT_EQ(r.exit_code, 2) << tiny << "\n" << r.output;
+    EXPECT_NE(r.output.find("phellem: error: <command line>: --edge-px: must be at least 0.5 (pixels; at most 1000)"),
+              std::string::npos)
+        << r.output;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = test::run_phellem_limited("preview" + snapshot + " --edge-px 0.5", 8192, 60);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_LT(seconds, 30.0) << r.output;
 }
 
 TEST(PreviewCli, TheWindowRunsUnderAVirtualDisplay) {
