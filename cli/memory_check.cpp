@@ -1,12 +1,16 @@
 #include "cli/memory_check.h"
 
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "cli/slice.h"
 #include "io/film.h"
 #include "renderer/film_memory.h"
+#include "scene/growth_time.h"
 #include "scene/memory_budget.h"
 #include "scene/scene_parser.h"
+#include "util/errors.h"
 
 namespace phellem {
 
@@ -58,11 +62,54 @@ MemoryRequest request(const cli::Options& o, const SceneDesc& desc, int width, i
   return r;
 }
 
+// The longest growth a command starts without being asked (--time-limit raises it): a run of
+// hours should be a decision, not a surprise found the next morning.
+constexpr double kDefaultTimeLimit = 3600;
+
+std::string about(double vertices) {
+  char s[32];
+  if (vertices < 1000)
+    std::snprintf(s, sizeof s, "%.0f", vertices);
+  else if (vertices < 1e6)
+    std::snprintf(s, sizeof s, "%.0fk", vertices / 1e3);
+  else
+    std::snprintf(s, sizeof s, "%.1fM", vertices / 1e6);
+  return s;
+}
+
+// Prints each growth's estimate (unless --quiet) and refuses the growths together over the
+// time limit, at the steps of the longest.
+void check_growth_time(const cli::Options& o, const SceneDesc& desc) {
+  const std::vector<GrowthTime> times = estimate_growth_times(desc);
+  if (times.empty()) return;
+  double total = 0;
+  const GrowthTime* longest = &times.front();
+  for (const GrowthTime& t : times) {
+    total += t.seconds;
+    if (t.seconds > longest->seconds) longest = &t;
+    if (!o.quiet)
+      std::cerr << "growth of " << t.object << ": about " << human_duration(t.seconds) << " for " << t.steps
+                << " steps of ~" << about(t.vertices) << " interface vertices\n";
+  }
+  const double limit = o.time_limit.value_or(kDefaultTimeLimit);
+  if (total <= limit) return;
+  // A limit to suggest: the estimate with room to spare, in whole hours.
+  const double hours = std::ceil(1.5 * total / 3600);
+  throw UserError(longest->file, longest->where,
+                  "the growth of " + longest->object + " would take about " + human_duration(longest->seconds) + " (" +
+                      std::to_string(longest->steps) + " steps of ~" + about(longest->vertices) +
+                      " interface vertices" + (times.size() > 1 ? "; all growths " + human_duration(total) : std::string()) +
+                      "), over the time limit of " + human_duration(limit) +
+                      ": lower steps, or raise the limit with --time-limit (e.g. --time-limit " +
+                      std::to_string((long long)hours) + "h)");
+}
+
 }  // namespace
 
 void check_scene_memory(const cli::Options& o, const SceneDesc& desc, int width, int height) {
   const MemoryBudget budget = memory_budget(o.memory_limit);
   check_memory(estimate_memory(desc, request(o, desc, width, height)), budget);
+  check_growth_time(o, desc);
 }
 
 int run_memory_estimate(const cli::Options& o) {

@@ -68,6 +68,24 @@ double finite_number(const std::string& opt, const std::string& v, double hi, co
   return x;
 }
 
+// A duration: a positive number of seconds, or of minutes, hours or days with the suffix m, h
+// or d (90m, 6h, 2d), at most a year.
+double duration(const std::string& opt, const std::string& v) {
+  const std::string range = "must be a duration such as 3600, 90m, 6h or 2d (at most 365d)";
+  std::string digits = v;
+  double unit = 1;
+  if (!v.empty() && (v.back() == 's' || v.back() == 'm' || v.back() == 'h' || v.back() == 'd')) {
+    unit = v.back() == 'm' ? 60 : v.back() == 'h' ? 3600 : v.back() == 'd' ? 86400 : 1;
+    digits.pop_back();
+  }
+  double x = 0;
+  auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), x);
+  if (digits.empty() || p != digits.data() + digits.size() || ec != std::errc() || !std::isfinite(x) || !(x > 0) ||
+      x * unit > 365 * 86400.0)
+    bad(opt, range + ", got \"" + v + "\"");
+  return x * unit;
+}
+
 // Output names are checked before any work: a wrong extension found only when the file is
 // written would cost the whole render.
 void need_extension(const std::string& opt, const std::string& file, const std::string& ext) {
@@ -94,9 +112,16 @@ std::string usage() {
          "  phellem slice SCENE.json -o SECTION.png [--object NAME] [--plane x|y|z=VALUE] [--res WxH] [--quiet]\n"
          "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--max-level N]\n"
          "                 [--edge-px P] [--frames N] [--quiet]\n"
-         "  render, turntable, growth, simulate, slice and fit also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
-         "  physical memory; never above the address space `ulimit -v` leaves), and all but fit [--memory-estimate] (print the\n"
-         "  memory each stage needs, and stop).\n"
+         "  render, turntable, growth, simulate, slice and fit also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of
+"
+         "  physical memory; never above the address space `ulimit -v` leaves), and all but fit [--memory-estimate] (print the
+"
+         "  memory each stage needs, and stop).
+"
+         "  They print how long each cambial growth will take, and refuse growth estimated to take longer
+"
+         "  than [--time-limit DURATION] (default 1h; e.g. 90m, 12h, 2d).
+"
          "  phellem --help | --version\n"
          "Ranges: --spp N in [1, 1048576] (render.spp), --seed S in [0, 18446744073709551615]\n"
          "(render.seed), --res WxH each in [1, 32768], --threads N in [1, 1024], --frames N in\n"
@@ -188,7 +213,9 @@ Options parse(const std::vector<std::string>& args) {
       } catch (const std::invalid_argument&) {
         bad(a, "expected a memory size such as 6G, 512M, 1.5T or 50% (of physical memory), got \"" + o.memory_limit + "\"");
       }
-    } else if (a == "--scale" && fit)
+    } else if (a == "--time-limit" && !fit && o.command != "preview")
+      o.time_limit = duration(a, value());
+    else if (a == "--scale" && fit)
       o.scale = positive(a, value(), 10000, "the photo's scale in pixels per cm");
     else if (a == "--albedo" && fit)
       o.albedo = value();

@@ -21,6 +21,7 @@ struct Options {
   bool no_mesh = false;          // simulate: skip the .glb bark meshes
   std::string memory_limit;      // --memory-limit SIZE (empty: PHELLEM_MEMORY_LIMIT or 3/4 of physical memory)
   bool memory_estimate = false;  // --memory-estimate: print the estimate and stop
+  std::optional<double> time_limit;  // --time-limit DURATION in seconds: the longest growth started (cli/memory_check.h)
   // fit: HEIGHT_IMAGE (in `scene`), --scale PX_PER_CM, --albedo IMAGE, --model, --time-budget S, --max-evals N.
   std::optional<double> scale, time_budget;
   std::string albedo, model;

@@ -371,27 +371,37 @@ struct GrowthCost {
   double crack_triangles = 0;  // the cracked mesh rendered at the end (0 without coupling)
 };
 
-GrowthCost growth_cost(const ObjectDesc& o, size_t oi) {
-  double n_in = 0, area = 0, edge = 0;
+}  // namespace
+
+GrowthInputSize growth_input_size(const ObjectDesc& o) {
+  GrowthInputSize in;
   if (o.type == ObjectType::Tree) {
     const DicingParams d = tree_mesh_dicing(o);
     for (const TreePart& part : build_tree(o.tree, make_displacement(o.tree.displacement))) {
-      n_in += double(estimate_triangles(part.surface, d)) / 2;
-      area += mean_circumference(*part.cylinder) * part.cylinder->length();
+      in.vertices += double(estimate_triangles(part.surface, d)) / 2;
+      in.area += mean_circumference(*part.cylinder) * part.cylinder->length();
     }
   } else if (o.procedural) {
     ObjectDesc coarse = o;
     coarse.procedural = coarse_procedural(*o.procedural, 2000);
     const bark::TriMesh t = object_trimesh(coarse);
-    area = trimesh_area(t);
-    n_in = double(std::max(20, o.procedural->triangles)) / 2;
+    in.area = trimesh_area(t);
+    in.vertices = double(std::max(20, o.procedural->triangles)) / 2;
   } else {
     const LoadedCounts lc = file_counts(o);
-    n_in = lc.triangles / 2;
-    area = lc.area;
+    in.vertices = lc.triangles / 2;
+    in.area = lc.area;
   }
-  edge = std::sqrt(area / std::max(1.0, 2 * n_in) / 0.4330127);  // the mean edge of that many equilateral triangles
-  const GrowthSize size = estimate_growth_size(*o.growth, size_t(n_in), area, edge);
+  // The mean edge of that many equilateral triangles.
+  in.mean_edge = std::sqrt(in.area / std::max(1.0, 2 * in.vertices) / 0.4330127);
+  return in;
+}
+
+namespace {
+
+GrowthCost growth_cost(const ObjectDesc& o, size_t oi) {
+  const GrowthInputSize in = growth_input_size(o);
+  const GrowthSize size = estimate_growth_size(*o.growth, size_t(in.vertices), in.area, in.mean_edge);
   const std::string name = object_name(o, oi, o.type == ObjectType::Tree ? "tree" : "mesh");
   GrowthCost c;
   c.growth.file = o.where.file;

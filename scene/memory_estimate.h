@@ -53,4 +53,13 @@ struct MemoryEstimate {
 // displacement are read to count their triangles.
 MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& request);
 
+// The surface a growth starts from, as its memory and time estimates see it before it is
+// built (a closed surface has about two triangles per vertex).
+struct GrowthInputSize {
+  double vertices = 0;
+  double area = 0;       // m²
+  double mean_edge = 0;  // m: of that many equilateral triangles over that area
+};
+GrowthInputSize growth_input_size(const ObjectDesc& o);
+
 }  // namespace phellem

@@ -1,5 +1,6 @@
 #include "scene/procedural_mesh_desc.h"
 
+#include <cstdio>
 #include <string>
 
 #include "scene/mesh_source.h"
@@ -40,6 +41,22 @@ ProceduralMeshDesc parse_procedural(JsonObject o) {
     if (const auto problem = bark::check_branch_junction(branch_junction_params(p)))
       o.fail(o.has(problem->parameter) ? problem->parameter : "", problem->what);
   return p;
+}
+
+std::string growth_problem(const ProceduralMeshDesc& p) {
+  if (p.shape != "torus_knot") return "";
+  // The (2, 3) knot's centre line comes within 0.5544 × radius of itself where its strands
+  // cross (found numerically; the curve scales with radius): a tube thicker than half that
+  // passes through its other strand, and the default tube (0.06 of 0.15 m) does.
+  constexpr double kClosestApproach = 0.5544;
+  const double gap = kClosestApproach * double(p.radius);
+  if (double(p.tube) < 0.5 * gap) return "";
+  char what[320];
+  std::snprintf(what, sizeof what,
+                "a growing torus knot must not intersect itself: its strands pass %.3g m apart (0.554 x radius), so its "
+                "tube (%.3g m) must be thinner than %.3g m; growth needs a closed surface without self-intersections",
+                gap, double(p.tube), 0.5 * gap);
+  return what;
 }
 
 }  // namespace phellem

@@ -456,6 +456,9 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
       if (d.procedural && d.growth->direction_map && !d.growth->direction_map->attribute.empty())
         throw UserError(c.file, d.growth->where.path + "/direction_map/attribute",
                         "a vertex attribute comes from a mesh file; a procedural mesh has none (paint an image \"file\", or use strokes with a \"direction\")");
+      if (d.procedural)
+        if (const std::string problem = growth_problem(*d.procedural); !problem.empty())
+          throw UserError(c.file, o.path() + "/procedural/tube", problem);
     }
   } else if (type == "tree") {
     d.type = ObjectType::Tree;

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "bark/growth/complex_repair.h"
+#include "bark/growth/growable_surface.h"
 #include "bark/growth/growth_contact.h"
 #include "bark/growth/interface_curvature.h"
 #include "bark/growth/interface_motion.h"
@@ -22,12 +23,15 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 // The surface as one closed index mesh: vertices at the same position (split at UV seams)
 // welded into the first of them, which keeps its UV; vertices no triangle uses dropped (TetGen
-// would see them as loose points on top of the used ones).
-TriMesh welded(const TriMesh& in, std::vector<int64_t>* first_of = nullptr) {
+// would see them as loose points on top of the used ones). `face_of`: each kept triangle's
+// index in `in` (triangles that weld to a line or a point are dropped), for errors.
+TriMesh welded(const TriMesh& in, std::vector<int64_t>* first_of = nullptr, std::vector<uint32_t>* face_of = nullptr) {
   std::map<std::array<double, 3>, uint32_t> at;
   TriMesh out;
   if (first_of) first_of->clear();
-  for (const auto& t : in.triangles) {
+  if (face_of) face_of->clear();
+  for (uint32_t i = 0; i < in.triangles.size(); ++i) {
+    const auto& t = in.triangles[i];
     std::array<uint32_t, 3> g{};
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d& p = in.positions[t[size_t(k)]];
@@ -39,7 +43,10 @@ TriMesh welded(const TriMesh& in, std::vector<int64_t>* first_of = nullptr) {
       }
       g[size_t(k)] = it->second;
     }
-    if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2]) out.triangles.push_back(g);
+    if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2]) {
+      out.triangles.push_back(g);
+      if (face_of) face_of->push_back(i);
+    }
   }
   return out;
 }
@@ -92,7 +99,9 @@ CambialGrowth::CambialGrowth(const TriMesh& surface, const std::vector<GrowthObs
   if (!vertex_direction.empty() && vertex_direction.size() != surface.positions.size())
     throw std::invalid_argument("CambialGrowth: one direction per surface vertex");
   std::vector<int64_t> first_of;  // welded vertex -> the input vertex it was made from
-  const TriMesh input = welded(surface, &first_of);
+  std::vector<uint32_t> face_of;  // welded triangle -> the input triangle
+  const TriMesh input = welded(surface, &first_of, &face_of);
+  require_growable(input, file, where, face_of);
   const double mean = mean_edge_length(input);
   if (settings_.edge_max <= 0) settings_.edge_max = 1.5 * mean;
   if (settings_.edge_min <= 0) settings_.edge_min = 0.4 * settings_.edge_max;

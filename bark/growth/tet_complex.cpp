@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "bark/geometry/uv_seams.h"
+#include "bark/growth/growable_surface.h"
 #include "bark/growth/outside_lattice.h"
 #include "bark/growth/tetgen_process.h"
 #include "util/errors.h"
@@ -28,28 +29,6 @@ K::Point_3 cgal(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
 CGAL::Orientation orientation(const TetComplex& c, const std::array<uint32_t, 4>& t) {
   return CGAL::orientation(cgal(c.points[t[0]]), cgal(c.points[t[1]]), cgal(c.points[t[2]]), cgal(c.points[t[3]]));
-}
-
-// A closed, consistently oriented surface uses every edge exactly once in each direction.
-void require_closed(const TriMesh& m, const std::string& file, const std::string& where,
-                    const std::string& what = "the surface to grow") {
-  std::map<std::pair<uint32_t, uint32_t>, int> directed;
-  for (const auto& t : m.triangles)
-    for (int e = 0; e < 3; ++e) ++directed[{t[size_t(e)], t[size_t(e + 1) % 3]}];
-  for (const auto& [edge, n] : directed) {
-    const auto back = directed.find({edge.second, edge.first});
-    if (n != 1 || back == directed.end() || back->second != 1)
-      throw UserError(file, where,
-                      what + " must be closed and consistently oriented: its edge between vertices " +
-                          std::to_string(edge.first) + " and " + std::to_string(edge.second) + " is used " +
-                          std::to_string(n) + " time(s) one way and " +
-                          std::to_string(back == directed.end() ? 0 : back->second) + " the other");
-  }
-  if (m.triangles.empty()) throw UserError(file, where, what + " has no triangles");
-  for (const auto& t : m.triangles)
-    for (uint32_t v : t)
-      if (v >= m.positions.size())
-        throw UserError(file, where, what + " refers to vertex " + std::to_string(v) + " of " + std::to_string(m.positions.size()));
 }
 
 // Six times the signed volume a closed mesh encloses (> 0 when its triangles face outwards).

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -11,6 +12,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <optional>
+
+#include "util/temp_files.h"
 
 namespace phellem::bark {
 
@@ -28,6 +32,22 @@ bool write_all(int fd, const void* data, size_t n) {
     n -= size_t(w);
   }
   return true;
+}
+
+// The child's first act: it must not outlive Phellem (TetGen may run for minutes, or loop until
+// its time limit). The kernel kills it when the thread that forked it ends, which is when the
+// process ends: that thread waits for the child in tetrahedralize_in_child (or kills it on the
+// way out, ChildGuard) and so cannot end before it. A parent that died before the request took
+// effect has already left the child with another parent. The termination handler the child
+// inherited (util/temp_files.h) would remove the parent's temporaries: the default action
+// instead, so a signal sent to the whole process group just ends the child.
+void die_with_parent(pid_t parent) {
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != parent) ::_exit(6);
+  for (const int sig : {SIGTERM, SIGINT, SIGHUP}) {
+    struct sigaction old {};
+    if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler != SIG_IGN) ::signal(sig, SIG_DFL);
+  }
 }
 
 // The child: never returns. Exit 0 with the mesh written; 3 with TetGen's error code written.
@@ -58,6 +78,40 @@ bool write_all(int fd, const void* data, size_t n) {
   ::_exit(ok ? 0 : 5);
 }
 
+// Kills and reaps the child unless it was reaped: an exception on the parent's side (out of
+// memory while reading the mesh) must not leave TetGen running, nor its forking thread gone
+// while it runs.
+class ChildGuard {
+ public:
+  explicit ChildGuard(pid_t pid) : pid_(pid) {
+    try {
+      live_.emplace(int(pid));  // a termination signal kills it before Phellem dies
+    } catch (const std::logic_error&) {
+      // Another child is registered (one at a time): the kernel's parent-death signal still ends it.
+    }
+  }
+  ~ChildGuard() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    wait();
+  }
+  ChildGuard(const ChildGuard&) = delete;
+  ChildGuard& operator=(const ChildGuard&) = delete;
+  // Waits for the child's end; its status.
+  int wait() {
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = 0;
+    live_.reset();
+    return status;
+  }
+
+ private:
+  pid_t pid_;
+  std::optional<LiveChild> live_;
+};
+
 }  // namespace
 
 TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in, double time_limit_s) {
@@ -68,6 +122,7 @@ TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in, do
   // them on its error paths, even when quiet.
   std::fflush(stdout);
   std::fflush(stderr);
+  const pid_t parent = ::getpid();
   ::flockfile(stdout);
   ::flockfile(stderr);
   const pid_t pid = ::fork();
@@ -79,9 +134,11 @@ TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in, do
     throw TetgenFailure(std::string("cannot start TetGen's process: ") + std::strerror(errno));
   }
   if (pid == 0) {
+    die_with_parent(parent);
     ::close(fds[0]);
     run_child(fds[1], switches, in);
   }
+  ChildGuard child(pid);
   ::close(fds[1]);
   std::vector<char> bytes;
   char buffer[1 << 16];
@@ -106,9 +163,7 @@ TetgenMesh tetrahedralize_in_child(const std::string& switches, tetgenio& in, do
   }
   ::close(fds[0]);
   if (late) ::kill(pid, SIGKILL);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  const int status = child.wait();
   if (late) {
     char limit[32];
     std::snprintf(limit, sizeof limit, "%g", time_limit_s);

@@ -172,5 +172,63 @@ TEST(CambialGrowthCli, SliceDrawsTheRingsAndRefusesAPlaneThatMissesTheWood) {
   EXPECT_NEAR(corner[0], corner[2], 0.05f);
 }
 
+// An octahedron as an OBJ file: `flip` winds every face the wrong way; `fold` pulls its top
+// vertex through the middle and out beside the bottom one, so the faces around it cross the
+// bottom ones (a closed, consistently wound "bow-tie").
+std::string octahedron_obj(bool flip, bool fold) {
+  std::string obj = "v 0.1 0 0\nv -0.1 0 0\nv " + std::string(fold ? "0.2 -0.05 0.2" : "0 0.1 0") +
+                    "\nv 0 -0.1 0\nv 0 0 0.1\nv 0 0 -0.1\n";
+  const int faces[8][3] = {{1, 3, 5}, {5, 3, 2}, {2, 3, 6}, {6, 3, 1}, {1, 5, 4}, {5, 2, 4}, {2, 6, 4}, {6, 1, 4}};
+  for (const auto& f : faces)
+    obj += "f " + std::to_string(f[0]) + " " + std::to_string(flip ? f[2] : f[1]) + " " + std::to_string(flip ? f[1] : f[2]) + "\n";
+  return obj;
+}
+
+TEST(CambialGrowthCli, InsideOutAndSelfIntersectingMeshesAreRefusedBeforeTetGen) {
+  const std::string dir = test::temp_dir("cambial_growth_hostile_mesh");
+  const std::string scene = dir + "/scene.json";
+  // The limit keeps TetGen from looping for its default 120 s on the folded mesh (the old code's fate).
+  test::write_text(scene, R"({"objects": [{"type": "mesh", "name": "gem", "file": "gem.obj",
+                                          "growth": {"steps": 2, "thickness": 0.01, "tetrahedra": {"time_limit": 5}}}]})");
+  struct MeshCase {
+    bool flip, fold;
+    std::string says;
+  };
+  for (const MeshCase& c : {MeshCase{true, false, "the mesh is inside out (faces wound clockwise seen from outside)"},
+                            MeshCase{false, true, "the surface to grow intersects itself: faces "}}) {
+    test::write_text(dir + "/gem.obj", octahedron_obj(c.flip, c.fold));
+    const auto r = test::run_phellem_limited("simulate " + scene + " -o " + dir + "/out", 8192, 60);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output.rfind("phellem: error: " + scene + ": /objects/0/growth: " + c.says, 0), 0u) << r.output;
+  }
+  // The same octahedron wound outwards grows.
+  test::write_text(dir + "/gem.obj", octahedron_obj(false, false));
+  const auto ok = test::run_phellem_limited("simulate " + scene + " -o " + dir + "/out", 8192, 120);
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
+TEST(CambialGrowthCli, ATorusKnotGrowsWhenItsTubeClearsItsOtherStrands) {
+  const std::string dir = test::temp_dir("cambial_growth_knot");
+  const std::string scene = dir + "/scene.json";
+  const std::string growth = R"({"steps": 3, "thickness": 0.004, "ring_interval": 0})";
+  // The default tube (0.06 m on a 0.15 m knot) passes through the strand it crosses: the
+  // refusal says so at the tube, instead of TetGen failing on it.
+  test::write_text(scene, R"({"objects": [{"type": "mesh", "name": "knot", "procedural": {"shape": "torus_knot", "triangles": 3000},
+                                          "growth": )" + growth + "}]}");
+  const auto r = test::run_phellem_limited("simulate " + scene + " -o " + dir + "/out", 8192, 120);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("phellem: error: " + scene + ": /objects/0/procedural/tube: a growing torus knot must not intersect itself", 0), 0u)
+      << r.output;
+  EXPECT_NE(r.output.find("must be thinner than 0.0416 m"), std::string::npos) << r.output;
+  // A thinner tube is a closed surface without self-intersections: it grows.
+  test::write_text(scene, R"({"objects": [{"type": "mesh", "name": "knot", "procedural": {"shape": "torus_knot", "triangles": 3000,
+                                          "tube": 0.03}, "growth": )" + growth + "}]}");
+  const auto ok = test::run_phellem_limited("simulate " + scene + " -o " + dir + "/out", 8192, 300);
+  ASSERT_EQ(ok.exit_code, 0) << ok.output;
+  const nlohmann::json stats = nlohmann::json::parse(test::read_text(dir + "/out/knot.json"));
+  EXPECT_EQ(stats["steps"], 3);
+  EXPECT_GT(stats["vertices_end"].get<double>(), 0);
+}
+
 }  // namespace
 }  // namespace phellem
