@@ -1,5 +1,7 @@
 #include "io/builtin_files.h"
 
+#include "util/input_file.h"
+
 namespace phellem {
 
 bool is_builtin_path(std::string_view path) { return path.starts_with(kBuiltinPrefix); }
@@ -28,6 +30,11 @@ std::string builtin_problem(std::string_view path) {
 ImageSource open_image_source(const std::string& path, const OIIO::ImageSpec* config) {
   ImageSource s;
   if (!is_builtin_path(path)) {
+    // Never open what is not a regular file: OpenImageIO would wait on a FIFO for ever.
+    if (auto why = input_file_problem(path)) {
+      s.why = *why + "; an image is read from a regular file";
+      return s;
+    }
     s.in = OIIO::ImageInput::open(path, config);
     if (!s.in) s.why = OIIO::geterror();
     return s;

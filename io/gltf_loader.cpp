@@ -1,13 +1,13 @@
 #include <tiny_gltf.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "io/gltf_reader.h"
 #include "io/mesh_io.h"
 #include "util/cache_dir.h"
 #include "util/errors.h"
 #include "util/hash.h"
+#include "util/input_file.h"
 
 namespace phellem {
 
@@ -56,24 +56,19 @@ std::string image_file(const tinygltf::Model& m, int tex_index, const std::strin
   const std::string img_where = "images[" + std::to_string(src) + "]";
   if (!img.uri.empty() && img.uri.rfind("data:", 0) != 0) {
     const fs::path p = fs::path(gltf_path).parent_path() / img.uri;
-    if (!fs::is_regular_file(p)) throw UserError(gltf_path, img_where + ".uri", "image file not found: " + p.string());
+    std::error_code ec;
+    if (!fs::exists(p, ec)) throw UserError(gltf_path, img_where + ".uri", "image file not found: " + p.string());
+    require_input_file(p.string(), gltf_path, img_where + ".uri", "an image");
     return p.string();
   }
   if (img.image.empty()) throw UserError(gltf_path, img_where, "image has no data");
+  // Named by a hash and the size of the bytes, and reused only when it holds these very bytes.
   uint32_t h = 0x1234u;
   for (unsigned char c : img.image) h = hash_combine(h, c);
   std::string ext = ".png";
   if (img.mimeType == "image/jpeg") ext = ".jpg";
-  const fs::path out =
-      fs::path(texture_cache_dir()) / ("gltf_" + std::to_string(h) + "_" + std::to_string(img.image.size()) + ext);
-  if (!fs::exists(out)) {
-    const fs::path tmp = out.string() + ".tmp" + ext;
-    std::ofstream f(tmp, std::ios::binary);
-    f.write(reinterpret_cast<const char*>(img.image.data()), std::streamsize(img.image.size()));
-    f.close();
-    fs::rename(tmp, out);
-  }
-  return out.string();
+  const std::string name = "gltf_" + std::to_string(h) + "_" + std::to_string(img.image.size()) + ext;
+  return cache_entry_with_bytes(name, img.image, {gltf_path, img_where});
 }
 
 MaterialDesc convert_material(const tinygltf::Model& m, int index, const std::string& path) {

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "util/input_file.h"
+
 namespace phellem {
 
 namespace {
@@ -63,11 +65,29 @@ void check_model(const tinygltf::Model& model, const std::string& path) {
   }
 }
 
+// tinygltf's file access for the glTF file and the buffers and images it names, refusing what is
+// not a regular file before opening it (util/input_file.h): its own FileExists opens the file
+// to see whether it is there, and reading a FIFO blocks for ever.
+bool file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
+bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  if (auto why = input_file_problem(path)) {
+    if (err) *err += *why + "; glTF buffers and images are read from regular files\n";
+    return false;
+  }
+  return tinygltf::ReadWholeFile(out, err, path, nullptr);
+}
+
 }  // namespace
 
 tinygltf::Model open_gltf(const std::string& path) {
+  require_input_file(path, path, "read", "a glTF file");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_encoded_image, nullptr);
+  loader.SetFsCallbacks({file_exists, tinygltf::ExpandFilePath, read_regular_file, tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string err, warn;
   const bool binary = std::filesystem::path(path).extension() == ".glb";

@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <memory>
 
+#include "io/image_decode.h"
 #include "io/image_limits.h"
 #include "io/image_output.h"
 #include "util/errors.h"
+#include "util/input_file.h"
 
 namespace phellem {
 
@@ -33,7 +35,7 @@ struct OpenImage {
 OpenImage open_image(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw UserError(path, "", "no such file");
-  if (!std::filesystem::is_regular_file(path, ec)) throw UserError(path, "", "not a regular file");
+  require_input_file(path, path, "", "an image");  // before opening: a FIFO would block
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);  // PNG would otherwise multiply colour by alpha
   config.attribute("oiio:RawColor", 1);           // no colour-model conversion
@@ -53,8 +55,7 @@ std::vector<float> read_channels(OpenImage& im, int begin, int end, const std::s
   const int n = end - begin;
   std::vector<float> out(im.pixels() * size_t(n));
   auto decode = [&](OIIO::TypeDesc type, void* data) {
-    if (!im.in->read_image(0, 0, begin, end, type, data))
-      im.fail(where, "cannot decode the pixels: " + printable(im.in->geterror()));
+    if (auto why = decode_image(*im.in, begin, end, type, data)) im.fail(where, "cannot decode the pixels: " + *why);
   };
   const auto base = OIIO::TypeDesc::BASETYPE(im.spec.format.basetype);
   if (base == OIIO::TypeDesc::UINT8) {

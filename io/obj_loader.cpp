@@ -8,6 +8,7 @@
 
 #include "io/mesh_io.h"
 #include "util/errors.h"
+#include "util/input_file.h"
 
 namespace phellem {
 
@@ -127,38 +128,82 @@ void check_obj_indices(const std::string& path) {
   }
 }
 
+// Reads the material libraries an OBJ names (mtllib) from its folder, as tinyobjloader's
+// MaterialFileReader does, but refuses one that is not a regular file before opening it
+// (util/input_file.h): a FIFO would block the reader for ever. A missing library is a warning
+// and the default material, as in tinyobjloader.
+class MaterialLibraryReader : public tinyobj::MaterialReader {
+ public:
+  MaterialLibraryReader(std::string obj_path, std::filesystem::path folder)
+      : obj_path_(std::move(obj_path)), folder_(std::move(folder)) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* material_map, std::string* warn, std::string*) override {
+    const std::string file = (folder_ / name).string();
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) {
+      if (warn) *warn += "material library " + file + " not found\n";
+      return false;
+    }
+    require_input_file(file, obj_path_, "mtllib " + printable(name), "a material library");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw UserError(obj_path_, "mtllib " + printable(name), "cannot open " + printable(file));
+    tinyobj::LoadMtl(material_map, materials, &in, warn, nullptr);
+    return true;
+  }
+
+ private:
+  std::string obj_path_;
+  std::filesystem::path folder_;
+};
+
+struct ObjContents {
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+};
+
+ObjContents parse_obj(const std::string& path, const std::filesystem::path& folder) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UserError(path, "open", "cannot open OBJ file");
+  MaterialLibraryReader libraries(path, folder);
+  ObjContents obj;
+  std::string warn, err;
+  if (!tinyobj::LoadObj(&obj.attrib, &obj.shapes, &obj.materials, &warn, &err, &in, &libraries, /*triangulate*/ true,
+                        /*default_vcols_fallback*/ true)) {
+    while (!err.empty() && err.back() == '\n') err.pop_back();
+    throw UserError(path, "read", "invalid OBJ: " + (err.empty() ? std::string("unreadable file") : err));
+  }
+  return obj;
+}
+
 }  // namespace
 
 LoadedModel load_obj(const std::string& path) {
+  require_input_file(path, path, "open", "an OBJ file");  // before opening: a FIFO would block
   check_obj_indices(path);
-  tinyobj::ObjReaderConfig cfg;
-  cfg.triangulate = true;
-  cfg.mtl_search_path = std::filesystem::path(path).parent_path().string();
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, cfg)) {
-    std::string e = reader.Error();
-    while (!e.empty() && e.back() == '\n') e.pop_back();
-    throw UserError(path, "read", "invalid OBJ: " + (e.empty() ? std::string("unreadable file") : e));
-  }
-  const auto& attrib = reader.GetAttrib();
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  const ObjContents obj = parse_obj(path, folder);
+  const auto& attrib = obj.attrib;
   LoadedModel out;
-  for (size_t i = 0; i < reader.GetMaterials().size(); ++i) {
-    const auto& m = reader.GetMaterials()[i];
+  for (size_t i = 0; i < obj.materials.size(); ++i) {
+    const auto& m = obj.materials[i];
     MaterialDesc d;
     d.name = m.name;
     d.where = {path, "material " + m.name};
     d.type = MaterialType::Diffuse;
     d.base_color = Color(m.diffuse[0], m.diffuse[1], m.diffuse[2]).max(0.0f).min(1.0f);
     if (!m.diffuse_texname.empty()) {
-      d.base_color_texture.file = (std::filesystem::path(cfg.mtl_search_path) / m.diffuse_texname).string();
-      if (!std::filesystem::is_regular_file(d.base_color_texture.file))
+      d.base_color_texture.file = (folder / m.diffuse_texname).string();
+      std::error_code ec;
+      if (!std::filesystem::exists(d.base_color_texture.file, ec))
         throw UserError(path, "material " + m.name + ": map_Kd", "texture not found: " + d.base_color_texture.file);
+      require_input_file(d.base_color_texture.file, path, "material " + m.name + ": map_Kd", "a texture");
     }
     out.materials.push_back(d);
   }
   const size_t nv = attrib.vertices.size() / 3;
-  for (size_t si = 0; si < reader.GetShapes().size(); ++si) {
-    const auto& shape = reader.GetShapes()[si];
+  for (size_t si = 0; si < obj.shapes.size(); ++si) {
+    const auto& shape = obj.shapes[si];
     const std::string where = "shape " + (shape.name.empty() ? std::to_string(si) : shape.name);
     MeshData md;
     md.material = shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids[0];

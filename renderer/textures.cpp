@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <mutex>
 
+#include "io/builtin_files.h"
+#include "io/image_decode.h"
 #include "io/image_limits.h"
 #include "io/image_output.h"
 #include "util/cache_dir.h"
@@ -21,14 +23,26 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Bump when the conversion changes so stale cached .tx files are not reused.
-constexpr uint32_t kTextureCacheVersion = 2;
+// Bump when the conversion changes so stale cached .tx files are not reused (3: every source is
+// decoded through io/image_decode.h, which refuses a truncated JPEG that version 2 converted).
+constexpr uint32_t kTextureCacheVersion = 3;
 
 struct Entry {
   TextureDesc desc;
   OIIO::TextureSystem::TextureHandle* handle = nullptr;
   int channels = 0;
 };
+
+// Every pixel of `file` (`spec` its header) as floats, through the checked decoder
+// (io/image_decode.h): OpenImageIO's own texture conversion would take a truncated JPEG whole.
+std::vector<float> decode_texture(const std::string& file, const OIIO::ImageSpec& spec, const Location& where) {
+  ImageSource src = open_image_source(file);
+  if (!src.in) throw UserError(where.file, where.path, "cannot read image " + file + ": " + src.why);
+  std::vector<float> px(size_t(spec.width) * size_t(spec.height) * size_t(spec.depth) * size_t(spec.nchannels));
+  if (auto why = decode_image(*src.in, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
+    throw UserError(where.file, where.path, "cannot read image " + file + ": " + *why);
+  return px;
+}
 
 // Converts `src` to a linear, tiled, mip-mapped .tx (once; keyed by path, size, mtime).
 std::string make_tx(const TextureDesc& d, const Location& where) {
@@ -61,18 +75,16 @@ std::string make_tx(const TextureDesc& d, const Location& where) {
   const fs::path tmp = out.string() + "." + std::to_string(getpid()) + ".tmp.tx";
   std::stringstream log;
   bool ok;
+  // Decoded whole once, checked, whichever way it is converted.
+  std::vector<float> px = decode_texture(d.file, spec, where);
   if (d.srgb && eight_bit) {
     // sRGB 8-bit colour: decode to linear through the OCIO config, store as half.
-    OIIO::ImageBuf buf(d.file);
-    if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-      throw UserError(where.file, where.path, "cannot read image " + d.file + ": " + buf.geterror());
-    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-    buf.get_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, px.data());
     srgb_texture_to_linear(px.data(), long(spec.width) * spec.height, spec.nchannels);
     OIIO::ImageBuf lin(OIIO::ImageSpec(spec.width, spec.height, spec.nchannels, OIIO::TypeDesc::FLOAT), px.data());
     config.format = OIIO::TypeDesc::HALF;
     ok = OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, lin, tmp.string(), config, &log);
   } else {
+    px = {};  // only checked: the file converts from its own type
     ok = OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, d.file, tmp.string(), config, &log);
   }
   if (!ok) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/builtin_files.h"
+#include "io/image_decode.h"
 #include "io/image_limits.h"
 #include "util/errors.h"
 
@@ -21,8 +22,8 @@ std::vector<float> load_environment_image(const LightDesc& l, int* w, int* h) {
   *w = spec.width;
   *h = spec.height;
   std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!src.in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
-    throw UserError(l.where.file, l.where.path + "/file", "cannot read environment map " + l.file + ": " + src.in->geterror());
+  if (auto why = decode_image(*src.in, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
+    throw UserError(l.where.file, l.where.path + "/file", "cannot read environment map " + l.file + ": " + *why);
   std::vector<float> rgb(size_t(spec.width) * spec.height * 3);
   for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i) {
     float* c = &rgb[i * 3];

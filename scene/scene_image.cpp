@@ -5,8 +5,10 @@
 #include <filesystem>
 
 #include "io/builtin_files.h"
+#include "io/image_decode.h"
 #include "io/image_limits.h"
 #include "scene/json_reader.h"
+#include "util/input_file.h"
 
 namespace phellem {
 
@@ -16,7 +18,7 @@ SceneImage read_scene_image(const JsonValue& v, const std::string& base_dir) {
     if (auto why = builtin_problem(v.string()); !why.empty()) v.fail(why);
   } else {
     if (p.is_relative()) p = std::filesystem::path(base_dir) / p;
-    if (!std::filesystem::is_regular_file(p)) v.fail("file not found: " + p.string());
+    if (auto why = input_file_message(p.string(), "an image")) v.fail(*why);
   }
   ImageSource src = open_image_source(p.string());
   auto& in = src.in;
@@ -32,8 +34,8 @@ SceneImage read_scene_image(const JsonValue& v, const std::string& base_dir) {
   img.channels = spec.nchannels;
   img.encoded = spec.format.basetype != OIIO::TypeDesc::FLOAT && spec.format.basetype != OIIO::TypeDesc::HALF;
   img.pixels.resize(size_t(spec.width) * spec.height * spec.depth * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-    v.fail("cannot read image " + p.string() + ": " + in->geterror());
+  if (auto why = decode_image(*in, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+    v.fail("cannot read image " + p.string() + ": " + *why);
   return img;
 }
 

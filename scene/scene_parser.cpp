@@ -10,6 +10,7 @@
 #include "io/builtin_files.h"
 #include "scene/json_reader.h"
 #include "scene/procedural_mesh_desc.h"
+#include "util/input_file.h"
 #include "util/output_set.h"
 
 namespace phellem {
@@ -36,8 +37,9 @@ struct Ctx {
     fs::path p(s);
     if (p.is_relative()) p = base_dir / p;
     p = p.lexically_normal();
-    if (must_exist && !fs::is_regular_file(p)) v.fail("file not found: " + p.string());
     files->push_back(p.string());
+    if (!must_exist) return p.string();
+    if (auto why = input_file_message(p.string(), "a file a scene names")) v.fail(*why);
     return p.string();
   }
 };
@@ -570,15 +572,7 @@ SceneDesc load_scene_file(const std::string& path) {
   if (::stat(path.c_str(), &st) != 0)
     throw UserError(path, "open", std::string("cannot open scene file: ") + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) throw UserError(path, "open", "is a folder, not a scene file");
-  if (!S_ISREG(st.st_mode))
-    throw UserError(path, "open",
-                    std::string("is not a regular file (") +
-                        (S_ISFIFO(st.st_mode)   ? "a FIFO"
-                         : S_ISCHR(st.st_mode)  ? "a character device"
-                         : S_ISBLK(st.st_mode)  ? "a block device"
-                         : S_ISSOCK(st.st_mode) ? "a socket"
-                                                : "not a file") +
-                        "); a scene is read from a regular file");
+  require_input_file(path, path, "open", "a scene");  // a FIFO, a device, a socket
   if (uint64_t(st.st_size) > kMaxSceneFileBytes)
     throw UserError(path, "size",
                     "the scene file is " + std::to_string(uint64_t(st.st_size)) + " bytes; at most " +
