@@ -82,7 +82,7 @@ bark::CrackedMesh read_cracked_glb(const std::string& path) {
       out.displacement.emplace_back(dx[k], dy[k], dz[k]);
     }
     if (const auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
-      const std::vector<float> t = rd.floats(it->second, 2, where + ".attributes.TEXCOORD_0");
+      const std::vector<float> t = rd.uvs(it->second, where + ".attributes.TEXCOORD_0");
       if (t.size() != 2 * n) rd.fail(where + ".attributes.TEXCOORD_0", "must have one value per position");
       for (size_t k = 0; k < n; ++k) out.mesh.uvs.emplace_back(t[2 * k], 1.0 - t[2 * k + 1]);  // glTF's v points down
     }

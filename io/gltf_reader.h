@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/mesh_io.h"
 #include "util/errors.h"
 
 namespace phellem {
@@ -73,6 +74,16 @@ class GltfReader {
     const std::vector<float> all = floats(index, nc, where);
     std::vector<float> out(all.size() / size_t(nc));
     for (size_t i = 0; i < out.size(); ++i) out[i] = all[i * size_t(nc)];
+    return out;
+  }
+
+  // Reads accessor `index` as texture coordinates (VEC2), each within ±kMaxUv.
+  std::vector<float> uvs(int index, const std::string& where) const {
+    std::vector<float> out = floats(index, 2, where);
+    for (size_t i = 0; i < out.size(); ++i)
+      if (std::abs(out[i]) > kMaxUv)
+        fail(where, "accessor " + std::to_string(index) + " element " + std::to_string(i / 2) + " has texture coordinate " +
+                        std::to_string(out[i]) + "; at most 1e6 in magnitude are allowed");
     return out;
   }
 

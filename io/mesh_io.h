@@ -18,6 +18,11 @@ struct AttributeRequest {
   bool vec3 = false;
 };
 
+// The largest texture coordinate accepted (in OBJ and glTF files alike). Textures repeat every
+// unit, and a float holds 24 bits: at 1e6 the spacing between floats is 1/16 of a repeat, so
+// a lookup there lands only on one of 16 places in the texture; beyond, the texture is noise.
+inline constexpr float kMaxUv = 1e6f;
+
 struct LoadedModel {
   std::vector<MeshData> meshes;         // material indexes `materials` (-1: none)
   std::vector<MaterialDesc> materials;  // from the file (glTF PBR / OBJ MTL)

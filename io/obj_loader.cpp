@@ -1,6 +1,8 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +15,10 @@
 namespace phellem {
 
 namespace {
+
+// Coordinates and normals must fit a float (the loader keeps them as floats).
+constexpr double kMaxFloat = 3.4028234663852886e38;
+constexpr const char* kFloatRange = "coordinates must be finite and fit a float (magnitude at most 3.4e38)";
 
 // An OBJ index field: optional sign and decimal digits, saturated far beyond any count (so
 // 4294967299 stays 4294967299 instead of wrapping to 3 as atoi does in tinyobjloader).
@@ -30,17 +36,73 @@ bool parse_index(std::string_view text, int64_t* out) {
   return true;
 }
 
-// Checks every index of the face (f), line (l) and point (p) statements against the
-// positions (v), texture coordinates (vt) and normals (vn) defined before that line, as
-// OBJ defines them (1-based, negative = relative to the last one defined), before
-// tinyobjloader converts them: it parses indices with atoi (a huge index wraps to a valid
-// one) and drops out-of-range texture coordinate and normal indices without a word.
+// The numbers of a v, vn or vt line: its first `count` fields (a v line's w or vertex colour
+// and a vt line's w are not used), each a finite number that fits a float, within ±`limit`.
+// tinyobjloader reads "nan" and "inf" as 0 without a word and 1e39 as a float infinity.
+// Missing fields are left to tinyobjloader (it reads them as 0).
+void check_obj_numbers(std::string_view fields, const char* key, int count, double limit, const char* allowed,
+                       const std::string& path, size_t line_num) {
+  for (int k = 0; k < count; ++k) {
+    const size_t b = fields.find_first_not_of(" \t");
+    if (b == std::string_view::npos || fields[b] == '#') return;
+    fields.remove_prefix(b);
+    const std::string_view token = fields.substr(0, std::min(fields.find_first_of(" \t"), fields.size()));
+    fields.remove_prefix(token.size());
+    std::string_view digits = token;
+    if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);  // from_chars takes no '+'
+    double v = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    const bool whole = end == digits.data() + digits.size();
+    // A literal too small for a double (1e-400) is 0 for a float as well.
+    const bool underflow = ec == std::errc::result_out_of_range &&
+                           (digits.find("e-") != std::string_view::npos || digits.find("E-") != std::string_view::npos);
+    auto fail = [&](const char* what) {
+      throw UserError(path, "line " + std::to_string(line_num),
+                      std::string("'") + key + "' field " + std::to_string(k + 1) + " \"" + printable(token) + "\" " + what +
+                          "; " + allowed);
+    };
+    if (!whole || ec == std::errc::invalid_argument || !std::isfinite(v)) fail("is not a finite number");
+    if (!underflow && (ec == std::errc::result_out_of_range || std::abs(v) > limit)) fail("is out of range");
+  }
+}
+
+// tinyobjloader triangulates a face of more than four corners by ear clipping in time that
+// grows with the square of its corners or faster (measured: 0.4 s for one face of 4000
+// corners, 1.7 s for 8000, whether they are distinct points of a convex polygon or one index
+// repeated; a face "f 1 1 1 ..." of 200000 corners ran for over two minutes). Small faces
+// cost little beyond reading them, so the squared corner counts of the faces with more than
+// kLargeFace corners are summed and bounded: about 3 s of triangulation here, while an
+// ordinary mesh (caps of a few hundred corners, hundreds of them) stays far below.
+struct LargeFaceWork {
+  static constexpr uint64_t kLargeFace = 64;
+  static constexpr uint64_t kMaxWork = 100'000'000;
+  uint64_t work = 0;
+  void add(uint64_t corners, const std::string& path, const std::string& where) {
+    if (corners <= kLargeFace) return;
+    work += corners < (uint64_t(1) << 31) ? corners * corners : kMaxWork + 1;  // no overflow: work <= kMaxWork before
+    if (work > kMaxWork)
+      throw UserError(path, where,
+                      "this face has " + std::to_string(corners) + " corners; faces of more than " + std::to_string(kLargeFace) +
+                          " corners take time growing with the square of their corners to triangulate, and with this one "
+                          "the file's sum of those squares reaches " + std::to_string(work) + ", more than the " +
+                          std::to_string(kMaxWork) + " allowed (one face of 10000 corners, or hundreds of a few hundred)");
+  }
+};
+
+// Reads the file line by line before tinyobjloader does, checking what it would take
+// silently or take too long over: the numbers of v, vt and vn lines (check_obj_numbers), the
+// size of faces (LargeFaceWork), and every index of the face (f), line (l) and point (p)
+// statements against the positions (v), texture coordinates (vt) and normals (vn) defined
+// before that line, as OBJ defines them (1-based, negative = relative to the last one
+// defined): tinyobjloader parses indices with atoi (a huge index wraps to a valid one) and
+// drops out-of-range texture coordinate and normal indices without a word.
 // Lines end at \n, \r\n or \r, as in tinyobjloader, so the line numbers agree.
 void check_obj_indices(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(path, "open", "cannot open OBJ file");
   std::streambuf* sb = in.rdbuf();
   int64_t counts[3] = {0, 0, 0};  // v, vt, vn
+  LargeFaceWork large_faces;
   static const char* kinds[3] = {"vertex", "texture coordinate", "normal"};
   static const char* keys[3] = {"v", "vt", "vn"};
   std::string line;
@@ -71,14 +133,17 @@ void check_obj_indices(const std::string& path) {
       return t.size() > key.size() && t.substr(0, key.size()) == key && (t[key.size()] == ' ' || t[key.size()] == '\t');
     };
     if (statement("v")) {
+      check_obj_numbers(t.substr(2), "v", 3, kMaxFloat, kFloatRange, path, line_num);
       ++counts[0];
       continue;
     }
     if (statement("vt")) {
+      check_obj_numbers(t.substr(3), "vt", 2, kMaxUv, "texture coordinates must lie in [-1e6, 1e6]", path, line_num);
       ++counts[1];
       continue;
     }
     if (statement("vn")) {
+      check_obj_numbers(t.substr(3), "vn", 3, kMaxFloat, kFloatRange, path, line_num);
       ++counts[2];
       continue;
     }
@@ -86,6 +151,7 @@ void check_obj_indices(const std::string& path) {
     const char statement_key = t[0];
     t.remove_prefix(2);
     const std::string where = "line " + std::to_string(line_num);
+    uint64_t corners = 0;
     while (!t.empty()) {
       const size_t b = t.find_first_not_of(" \t");
       if (b == std::string_view::npos) break;
@@ -93,6 +159,7 @@ void check_obj_indices(const std::string& path) {
       const size_t e = std::min(t.find_first_of(" \t"), t.size());
       const std::string_view token = t.substr(0, e);
       t.remove_prefix(e);
+      ++corners;
       // v, v/vt, v//vn or v/vt/vn
       std::string_view fields[3];
       size_t nf = 0;
@@ -125,6 +192,7 @@ void check_obj_indices(const std::string& path) {
                               ", or from -1 back to -" + std::to_string(n) + ")");
       }
     }
+    if (statement_key == 'f') large_faces.add(corners, path, where);
   }
 }
 

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "util/json_nesting.h"
+
 namespace phellem {
 
 namespace {
@@ -98,6 +100,7 @@ class PathTracker {
 }  // namespace
 
 nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  check_json_nesting(text, file);  // before nlohmann's parser, whose recursion a deep file would overflow
   PathTracker tracker(file);
   try {
     return nlohmann::json::parse(

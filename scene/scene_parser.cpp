@@ -17,6 +17,11 @@ namespace phellem {
 
 namespace {
 
+// The largest emission colour component and strength: a float sample of their product (at
+// most 1e12), times a path's throughput and summed over a pixel's samples, stays far inside
+// a float, where 3e38 × 10 did not (every sample that saw it was discarded as non-finite).
+constexpr float kMaxEmission = 1e6f;
+
 namespace fs = std::filesystem;
 
 struct Ctx {
@@ -253,8 +258,15 @@ MaterialDesc parse_material(const Ctx& c, const std::string& name, JsonObject o)
   };
 
   if (m.type == MaterialType::Emissive) {
-    m.emission = o.color("color", m.emission);
-    if (auto v = o.get("strength")) m.strength = v->non_negative();
+    // Radiance = color × strength, each at most kMaxEmission.
+    if (auto v = o.get("color")) {
+      m.emission = v->color();
+      if ((m.emission > kMaxEmission).any()) v->fail("colour components must lie in [0, 1e6] (radiance = color × strength)");
+    }
+    if (auto v = o.get("strength")) {
+      m.strength = v->non_negative();
+      if (m.strength > kMaxEmission) v->fail("must lie in [0, 1e6] (radiance = color × strength)");
+    }
   } else {
     m.base_color = unit_color("base_color", m.base_color);
     if (auto v = o.get("base_color_texture")) m.base_color_texture = parse_texture(c, *v, true);
