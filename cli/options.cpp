@@ -112,16 +112,11 @@ std::string usage() {
          "  phellem slice SCENE.json -o SECTION.png [--object NAME] [--plane x|y|z=VALUE] [--res WxH] [--quiet]\n"
          "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--max-level N]\n"
          "                 [--edge-px P] [--frames N] [--quiet]\n"
-         "  render, turntable, growth, simulate, slice and fit also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of
-"
-         "  physical memory; never above the address space `ulimit -v` leaves), and all but fit [--memory-estimate] (print the
-"
-         "  memory each stage needs, and stop).
-"
-         "  They print how long each cambial growth will take, and refuse growth estimated to take longer
-"
-         "  than [--time-limit DURATION] (default 1h; e.g. 90m, 12h, 2d).
-"
+         "  render, turntable, growth, simulate, slice and fit also take [--memory-limit SIZE] (default: PHELLEM_MEMORY_LIMIT, else 75% of\n"
+         "  physical memory; never above the address space `ulimit -v` leaves), and all but fit [--memory-estimate] (print the\n"
+         "  memory each stage needs, and stop).\n"
+         "  They and preview print how long each cambial growth will take, and refuse growth estimated to\n"
+         "  take longer than [--time-limit DURATION] (default 1h; e.g. 90m, 12h, 2d).\n"
          "  phellem --help | --version\n"
          "Ranges: --spp N in [1, 1048576] (render.spp), --seed S in [0, 18446744073709551615]\n"
          "(render.seed), --res WxH each in [1, 32768], --threads N in [1, 1024], --frames N in\n"
@@ -213,7 +208,7 @@ Options parse(const std::vector<std::string>& args) {
       } catch (const std::invalid_argument&) {
         bad(a, "expected a memory size such as 6G, 512M, 1.5T or 50% (of physical memory), got \"" + o.memory_limit + "\"");
       }
-    } else if (a == "--time-limit" && !fit && o.command != "preview")
+    } else if (a == "--time-limit" && !fit)
       o.time_limit = duration(a, value());
     else if (a == "--scale" && fit)
       o.scale = positive(a, value(), 10000, "the photo's scale in pixels per cm");

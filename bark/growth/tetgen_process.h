@@ -3,7 +3,10 @@
 // onto itself) it may abort or crash instead of throwing, and that must not take Phellem
 // down with a signal. The child (fork) runs tetrahedralize() on the input already in memory
 // and sends the mesh back through a pipe; a child that dies or reports an error is a
-// TetgenFailure the caller turns into a UserError or a step without remeshing.
+// TetgenFailure the caller turns into a UserError or a step without remeshing. The child never
+// outlives Phellem: the kernel kills it when Phellem dies (PR_SET_PDEATHSIG, even by SIGKILL),
+// a termination signal kills it first (util/temp_files.h LiveChild), and every way out of
+// tetrahedralize_in_child kills and reaps it.
 #pragma once
 
 #include <stdexcept>
