@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A 64 × 64 RGB image of noise (so that it compresses badly) in whatever format `path` names.
+// A size × size RGB image of noise (so that it compresses badly) in whatever format `path` names.
 std::string noise_image(const std::string& path, int size = 64) {
   std::vector<unsigned char> px(size_t(size) * size_t(size) * 3);
   uint32_t x = 12345;
@@ -37,9 +37,10 @@ std::string noise_image(const std::string& path, int size = 64) {
   return path;
 }
 
-// A valid JPEG whose bytes are cut in half: the header reads, half the scan data is missing.
-std::string truncated_jpeg(const std::string& dir) {
-  const std::string bytes = test::read_text(noise_image(dir + "/whole.jpg"));
+// A valid JPEG (whole.jpg) and its first half (cut.jpg): the header reads, half the scan data
+// is missing.
+std::string truncated_jpeg(const std::string& dir, int size = 64) {
+  const std::string bytes = test::read_text(noise_image(dir + "/whole.jpg", size));
   const std::string cut = dir + "/cut.jpg";
   test::write_text(cut, bytes.substr(0, bytes.size() / 2));
   return cut;
@@ -163,15 +164,18 @@ TEST(TruncatedJpeg, IsRefusedAsAHeightMapAndAsAPhoto) {
   EXPECT_NO_THROW(read_height_image(dir + "/whole.jpg"));
 }
 
+// 512 px at 10 px/cm: large enough for both commands, which take the whole image.
 TEST(TruncatedJpeg, CompareAndFitExitTwo) {
   const std::string dir = test::temp_dir("jpeg_cut_cli");
-  const std::string cut = truncated_jpeg(dir);
+  const std::string cut = truncated_jpeg(dir, 512), whole = dir + "/whole.jpg";
   const std::string says = "cannot decode the pixels: the file is damaged or cut short (JPEG error: Premature end of JPEG file";
-  expect_refused(test::run_phellem_limited("compare " + cut + " " + dir + "/whole.jpg --scale A=10 --scale B=10", 4096, 60),
-                 cut + ": pixels: ", says);
-  expect_refused(test::run_phellem_limited("fit " + cut + " --scale 10 --model strips -o " + dir + "/out", 4096, 60),
+  const std::string scales = " --scale A=10 --scale B=10";
+  expect_refused(test::run_phellem_limited("compare " + cut + " " + whole + scales, 4096, 120), cut + ": pixels: ", says);
+  expect_refused(test::run_phellem_limited("fit " + cut + " --scale 10 --model strips --max-evals 1 -o " + dir + "/out", 4096, 120),
                  cut + ": pixels: ", says);
   EXPECT_FALSE(fs::exists(dir + "/out"));
+  const auto r = test::run_phellem_limited("compare " + whole + " " + whole + scales, 4096, 120);
+  EXPECT_EQ(r.exit_code, 0) << r.output;  // the same file whole
 }
 
 TEST(TruncatedJpeg, IsRefusedAsATexture) {
