@@ -6,7 +6,6 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,41 +18,10 @@
 
 #include "tests/support/test_util.h"
 
-extern char** environ;
-
 namespace phellem {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Starts phellem with `args`, SIGINT and SIGTERM at their default action, stdout to /dev/null
-// and stderr to `err`. Returns its pid (−1 when it could not start).
-pid_t start_phellem(const std::vector<std::string>& args, const std::string& err) {
-  std::vector<std::string> argv_s = {PHELLEM_BINARY};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t defaults, none;
-  sigemptyset(&defaults);
-  sigaddset(&defaults, SIGINT);
-  sigaddset(&defaults, SIGTERM);
-  sigemptyset(&none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&files, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = -1;
-  const int e = posix_spawn(&pid, argv[0], &files, &attr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&files);
-  posix_spawnattr_destroy(&attr);
-  return e == 0 ? pid : -1;
-}
 
 // A process's state letter and parent from /proc/PID/stat ('\0' when it does not exist).
 struct ProcState {
@@ -108,7 +76,7 @@ TEST_P(TetgenChild, DiesWithPhellem) {
   const int signal = GetParam();
   const std::string dir = test::temp_dir("tetgen_child_" + std::to_string(signal));
   test::write_text(dir + "/scene.json", kSlowTetgenScene);
-  const pid_t pid = start_phellem({"simulate", dir + "/scene.json", "-o", dir + "/out", "--quiet"}, dir + "/err.txt");
+  const pid_t pid = test::start_phellem({"simulate", dir + "/scene.json", "-o", dir + "/out", "--quiet"}, dir + "/err.txt");
   ASSERT_GT(pid, 0);
   pid_t child = 0;
   int status = 0;
@@ -174,7 +142,7 @@ TEST(GrowthTime, WithTheLimitRaisedItPrintsTheEstimateAndStarts) {
   const std::string scene = dir + "/scene.json";
   test::write_text(scene, long_growth_scene());
   const std::string err = dir + "/err.txt";
-  const pid_t pid = start_phellem({"simulate", scene, "-o", dir + "/out", "--time-limit", "2d"}, err);
+  const pid_t pid = test::start_phellem({"simulate", scene, "-o", dir + "/out", "--time-limit", "2d"}, err);
   ASSERT_GT(pid, 0);
   std::string text;
   int status = 0;

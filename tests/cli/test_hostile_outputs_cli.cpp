@@ -38,7 +38,7 @@ void expect_exit2(const test::CommandResult& r, const std::string& message, cons
 TEST(HostileOutputsCli, ObjectNamesCannotLeadOutOfTheOutputFolder) {
   const std::string d = test::temp_dir("hostile_names");
   fs::create_directories(d + "/out");
-  for (const std::string name : {"../escape", "/tmp/phellem_escape", "sub/dir", ".hidden", "..", "a\\nb"}) {
+  for (const char* name : {"../escape", "/tmp/phellem_escape", "sub/dir", ".hidden", "..", "a\\nb"}) {
     test::write_text(d + "/scene.json", strip_tree(name));
     const auto r = test::run_phellem("simulate " + d + "/scene.json -o " + d + "/out --no-mesh");
     expect_exit2(r, d + "/scene.json: /objects/0/name: the name", name);
@@ -115,7 +115,7 @@ TEST(HostileOutputsCli, AFullDiskIsAnErrorAndTheEarlierFilesStay) {
   test::write_text(d + "/a.png", "old png");
   test::write_text(d + "/a.exr", "old exr");
   const std::string render = std::string(PHELLEM_BINARY) + " render " + d + "/scene.json --res 256x256 --spp 1 --quiet ";
-  for (const std::string out : {"--png " + d + "/a.png", "-o " + d + "/a.exr"}) {
+  for (const std::string& out : {"--png " + d + "/a.png", "-o " + d + "/a.exr"}) {
     const auto r = test::run_command("ulimit -f 1 && trap '' XFSZ && exec " + render + out + " 2>&1");
     EXPECT_EQ(r.exit_code, 2) << out << "\n" << r.output;
     EXPECT_NE(r.output.find(": write: wrote "), std::string::npos) << r.output;

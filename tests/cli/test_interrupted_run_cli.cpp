@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,42 +14,10 @@
 
 #include "tests/support/test_util.h"
 
-extern char** environ;
-
 namespace phellem {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Starts phellem with `args`, SIGINT, SIGTERM and SIGHUP at their default action (a test runner may
-// start us with SIGINT ignored), output to /dev/null. Returns its pid.
-pid_t start_phellem(const std::vector<std::string>& args) {
-  std::vector<std::string> argv_s = {PHELLEM_BINARY};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& a : argv_s) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t defaults, none;
-  sigemptyset(&defaults);
-  sigaddset(&defaults, SIGINT);
-  sigaddset(&defaults, SIGTERM);
-  sigaddset(&defaults, SIGHUP);
-  sigemptyset(&none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&files, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  const int err = posix_spawn(&pid, argv[0], &files, &attr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&files);
-  posix_spawnattr_destroy(&attr);
-  return err == 0 ? pid : -1;
-}
 
 // True once a temporary whose name ends in `ext` exists in `dir`.
 bool temporary_with(const std::string& dir, const std::string& ext) {
@@ -77,7 +44,7 @@ TEST_P(InterruptedRun, LeavesNoTemporaryAndTheEarlierOutputsWhole) {
   for (const std::string& f : outputs) test::write_text(f, "old");
   // Large enough that writing the EXR and the PNG takes a while; the signal is sent as soon as
   // the temporary appears.
-  const pid_t pid = start_phellem({"render", d + "/scene.json", "-o", outputs[0], "--png", outputs[1], "--stats", outputs[2],
+  const pid_t pid = test::start_phellem({"render", d + "/scene.json", "-o", outputs[0], "--png", outputs[1], "--stats", outputs[2],
                                    "--res", "1600x1200", "--spp", "1", "--threads", "2", "--quiet"});
   ASSERT_GT(pid, 0);
   bool sent = false;

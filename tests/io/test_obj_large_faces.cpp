@@ -29,7 +29,10 @@ std::string convex_faces(int corners, int faces) {
     text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
   }
   std::string face = "f";
-  for (int i = 1; i <= corners; ++i) face += " " + std::to_string(i);
+  for (int i = 1; i <= corners; ++i) {
+    face += ' ';
+    face += std::to_string(i);
+  }
   for (int k = 0; k < faces; ++k) text += face + "\n";
   return text;
 }

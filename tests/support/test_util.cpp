@@ -3,6 +3,9 @@
 #include "util/base64.h"
 
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <array>
 #include <cstdio>
@@ -12,6 +15,8 @@
 #include <iterator>
 #include <vector>
 #include "util/errors.h"
+
+extern char** environ;
 
 namespace phellem::test {
 namespace {
@@ -60,6 +65,32 @@ CommandResult run_phellem_limited(const std::string& args, int memory_mib, int s
   return run_command("ulimit -v " + std::to_string(memory_mib * 1024) + " && exec timeout -k 5 " + std::to_string(seconds) + " " +
                      PHELLEM_BINARY + " " + args + " --quiet 2>&1");
 }
+int start_phellem(const std::vector<std::string>& args, const std::string& err) {
+  std::vector<std::string> argv_s = {PHELLEM_BINARY};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&defaults, sig);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&files, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  const int e = posix_spawn(&pid, argv[0], &files, &attr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  posix_spawnattr_destroy(&attr);
+  return e == 0 ? int(pid) : -1;
+}
+
 std::string temp_dir(const std::string& name) {
   auto d = std::filesystem::temp_directory_path() / ("phellem_test_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(d);

@@ -19,6 +19,10 @@ CommandResult run_command(const std::string& cmd);
 // (exit code 124 when it timed out): for inputs that could make a broken build allocate
 // without end or wait for ever.
 CommandResult run_phellem_limited(const std::string& args, int memory_mib, int seconds);
+// Starts phellem with `args` and returns at once with its pid (−1 when it could not start):
+// SIGINT, SIGTERM and SIGHUP at their default action (a test runner may start us with one
+// ignored), no signal blocked, stdout to /dev/null and stderr to `err`.
+int start_phellem(const std::vector<std::string>& args, const std::string& err = "/dev/null");
 std::string temp_dir(const std::string& name);
 // Standard base64 (RFC 4648, padded), for data: URIs in test glTF files.
 std::string base64(const std::vector<unsigned char>& in);
