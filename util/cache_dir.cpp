@@ -1,10 +1,6 @@
 #include "util/cache_dir.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +8,8 @@
 #include <vector>
 
 #include "util/atomic_file.h"
+#include "util/checked_write.h"
+#include "util/errors.h"
 #include "util/input_file.h"
 
 namespace phellem {
@@ -37,28 +35,17 @@ bool holds_bytes(const fs::path& file, std::span<const unsigned char> bytes) {
   return in.peek() == std::char_traits<char>::eof();
 }
 
-[[noreturn]] void write_failed(const std::string& entry, int error, const Location& where) {
-  throw UserError(where.file, where.path,
-                  "write: cannot write " + entry + " in the texture cache: " + std::strerror(error) +
-                      " (make room on its disk, or set XDG_CACHE_HOME to a folder with room)");
-}
-
-// Writes `bytes` to `tmp`, checking every write and the close (a full disk fails either).
+// Writes `bytes` to `tmp` with every write checked (a full disk fails it), reported at the
+// glTF's image that the entry caches.
 void write_bytes(const std::string& tmp, std::span<const unsigned char> bytes, const std::string& entry,
                  const Location& where) {
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) write_failed(entry, errno, where);
-  for (size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = n < 0 ? errno : EIO;
-      ::close(fd);
-      write_failed(entry, error, where);
-    }
-    done += size_t(n);
+  try {
+    write_file_checked(entry, tmp, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  } catch (const UserError& e) {
+    throw UserError(where.file, where.path,
+                    "write: cannot write " + entry + " in the texture cache: " + e.detail() +
+                        " (make room on its disk, or set XDG_CACHE_HOME to a folder with room)");
   }
-  if (::close(fd) != 0) write_failed(entry, errno, where);
 }
 
 }  // namespace
