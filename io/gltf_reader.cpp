@@ -6,9 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 
-#include "util/json_nesting.h"
-
 #include "util/input_file.h"
+#include "util/json_nesting.h"
 
 namespace phellem {
 
@@ -48,13 +47,10 @@ void check_glb_header(const std::vector<unsigned char>& h, const std::string& pa
 }
 
 // The whole file, read here rather than by tinygltf so that its JSON is checked
-// (check_json_nesting) before tinygltf parses it. Only a regular file is read (a FIFO or a
-// device would never end), and at most what tinygltf's 32-bit lengths can address.
+// (check_json_nesting) before tinygltf parses it: a regular file (open_gltf checked), at most
+// what tinygltf's 32-bit lengths can address.
 std::vector<unsigned char> read_gltf_file(const std::string& path) {
   std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw UserError(path, "read", "invalid glTF: cannot open the file (missing or unreadable)");
-  if (!fs::is_regular_file(st)) throw UserError(path, "read", "invalid glTF: not a regular file");
   const uintmax_t size = fs::file_size(path, ec);
   if (ec) throw UserError(path, "read", "invalid glTF: cannot read the file size");
   if (size > kMaxGltfFileBytes)

@@ -97,7 +97,7 @@ struct LargeFaceWork {
 // defined): tinyobjloader parses indices with atoi (a huge index wraps to a valid one) and
 // drops out-of-range texture coordinate and normal indices without a word.
 // Lines end at \n, \r\n or \r, as in tinyobjloader, so the line numbers agree.
-void check_obj_indices(const std::string& path) {
+void check_obj_lines(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(path, "open", "cannot open OBJ file");
   std::streambuf* sb = in.rdbuf();
@@ -248,7 +248,7 @@ ObjContents parse_obj(const std::string& path, const std::filesystem::path& fold
 
 LoadedModel load_obj(const std::string& path) {
   require_input_file(path, path, "open", "an OBJ file");  // before opening: a FIFO would block
-  check_obj_indices(path);
+  check_obj_lines(path);
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   const ObjContents obj = parse_obj(path, folder);
   const auto& attrib = obj.attrib;

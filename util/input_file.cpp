@@ -9,17 +9,18 @@
 
 namespace phellem {
 
-namespace {
-
-constexpr const char* kMissing = "does not exist";
-
-const char* kind_of(mode_t mode) {
+const char* file_kind(unsigned mode) {
+  if (S_ISDIR(mode)) return "a folder";
   if (S_ISFIFO(mode)) return "a FIFO";
   if (S_ISCHR(mode)) return "a character device";
   if (S_ISBLK(mode)) return "a block device";
   if (S_ISSOCK(mode)) return "a socket";
   return "not a file";
 }
+
+namespace {
+
+constexpr const char* kMissing = "does not exist";
 
 // `named`: the path as the message shows it ("" when the error names the file already).
 std::optional<std::string> message(const std::string& path, const std::string& named, const std::string& kind) {
@@ -39,7 +40,7 @@ std::optional<std::string> input_file_problem(const std::string& path) {
   }
   if (S_ISREG(st.st_mode)) return std::nullopt;
   if (S_ISDIR(st.st_mode)) return std::string("is a folder");
-  return std::string("is not a regular file (") + kind_of(st.st_mode) + ")";
+  return std::string("is not a regular file (") + file_kind(st.st_mode) + ")";
 }
 
 std::optional<std::string> input_file_message(const std::string& path, const std::string& kind) {

@@ -9,6 +9,10 @@
 
 namespace phellem {
 
+// What a file of `mode` (stat's st_mode) that is not a regular file is, for messages: "a
+// folder", "a FIFO", "a character device", "a block device", "a socket".
+const char* file_kind(unsigned mode);
+
 // Why `path` cannot be read as an input file, as it reads after the file's name: "does not
 // exist", "is a folder", "is not a regular file (a FIFO)" (or a character device, a block
 // device, a socket); nullopt when it is a regular file. stat follows symbolic links, so a link

@@ -2,6 +2,7 @@
 
 #include <limits.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,6 +12,7 @@
 #include "util/atomic_file.h"
 #include "util/checked_write.h"
 #include "util/errors.h"
+#include "util/input_file.h"
 
 namespace phellem {
 
@@ -50,18 +52,6 @@ void require_writable_folder(const std::string& path, const std::string& option,
     throw UserError(path, option, "cannot write in folder " + folder.string() + ": " + std::strerror(errno));
 }
 
-// What a non-regular file is, for messages.
-std::string kind_of(fs::file_type t) {
-  switch (t) {
-    case fs::file_type::fifo: return "a FIFO";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::socket: return "a socket";
-    case fs::file_type::directory: return "a folder";
-    default: return "not a regular file";
-  }
-}
-
 // Where the bytes of output `path` go: `path` itself, or the file a symbolic link there points
 // to. UserError unless that is a new name or a regular file.
 std::string output_target(const std::string& option, const std::string& path) {
@@ -74,11 +64,11 @@ std::string output_target(const std::string& option, const std::string& path) {
                       "is a symbolic link to a missing file; an output is a new name, a regular file or a link to one");
     target = resolved.string();
   }
-  const fs::file_status st = fs::status(target, ec);
   // (A status that cannot be read, e.g. a path too long, is left to the checks that follow.)
-  if (!ec && st.type() != fs::file_type::not_found && st.type() != fs::file_type::regular)
+  struct stat st;
+  if (::stat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
     throw UserError(path, option,
-                    "is " + kind_of(st.type()) + (target == path ? "" : " (through a symbolic link)") +
+                    std::string("is ") + file_kind(st.st_mode) + (target == path ? "" : " (through a symbolic link)") +
                         "; an output is a new name, a regular file or a link to one");
   return target;
 }
