@@ -5,7 +5,6 @@
 // temporary. File names reach ffmpeg as they are (no shell): a quote in a name is harmless.
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,8 +17,6 @@
 #include <vector>
 
 #include "tests/support/test_util.h"
-
-extern char** environ;
 
 namespace phellem {
 namespace {
@@ -99,23 +96,9 @@ TEST(Mp4Cli, ATerminationSignalWhileEncodingEndsFfmpegToo) {
   const FakeFfmpeg fake(d + "/bin", "echo $$ > " + d + "/ffmpeg.pid\nexec sleep 60\n");
   test::write_text(d + "/scene.json", kScene);
   fs::create_directories(d + "/out");
-  std::vector<std::string> args = {PHELLEM_BINARY, "turntable",           d + "/scene.json", "--frames",       "2",
-                                   "-o",           d + "/out/f_%04d.exr", "--mp4",           d + "/out/t.mp4", "--quiet"};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t defaults, none;
-  sigemptyset(&defaults);
-  sigaddset(&defaults, SIGTERM);
-  sigemptyset(&none);
-  posix_spawnattr_setsigdefault(&attr, &defaults);
-  posix_spawnattr_setsigmask(&attr, &none);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-  pid_t pid = -1;
-  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, &attr, argv.data(), environ), 0);
-  posix_spawnattr_destroy(&attr);
+  const pid_t pid = test::start_phellem(
+      {"turntable", d + "/scene.json", "--frames", "2", "-o", d + "/out/f_%04d.exr", "--mp4", d + "/out/t.mp4", "--quiet"});
+  ASSERT_GT(pid, 0);
   const auto start = std::chrono::steady_clock::now();
   while (!fs::exists(d + "/ffmpeg.pid") && std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
