@@ -261,6 +261,9 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
       case ObjectType::Plane:
         made.push_back(from_mesh(plane_mesh(o)));
         break;
+      case ObjectType::Patch:
+        made.push_back(from_mesh(patch_mesh(o, 16, 16)));
+        break;
       case ObjectType::Tree:
       case ObjectType::Mesh: {
         if (o.stress_bark && bark_of(oi).cracked) {

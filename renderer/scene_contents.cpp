@@ -23,6 +23,14 @@ std::shared_ptr<MeshData> padded(MeshData m) {
   return std::make_shared<MeshData>(std::move(m));
 }
 
+// An image displacement is looked up at the texture coordinates: a mesh without them cannot take one.
+void require_texcoords(const ObjectDesc& o, const MeshData& m) {
+  if (o.displacement.type == DisplacementDesc::Type::Image && m.uvs.empty())
+    throw UserError(o.where.file, o.where.path + "/displacement",
+                    "an image displacement is looked up at the mesh's texture coordinates, and " +
+                        (o.file.empty() ? std::string("this mesh") : printable(o.file)) + " has none (export it with UVs)");
+}
+
 const ObjectBark& bark_of(const BarkResults& bark, size_t oi, const ObjectDesc& o) {
   const ObjectBark* b = bark.find(oi);
   if (!b)
@@ -36,6 +44,7 @@ const ObjectBark& bark_of(const BarkResults& bark, size_t oi, const ObjectDesc& 
 DicingJob stress_job(const SceneDesc& desc, const ObjectDesc& o, const ObjectBark& bark, int mat, int object_id) {
   const bark::CrackedMesh& cracked = *bark.cracked;
   MeshData base = to_mesh_data(cracked.mesh);
+  if (o.type == ObjectType::Mesh) require_texcoords(o, base);
   base.texture_levels = bark.texture_levels;  // a grown surface's (sec. 4.6)
   compute_vertex_normals(base, true);  // one normal per position: seams shade (and displace) alike
   std::shared_ptr<const bark::CrackBarkSurface> surface = crack_surface(o, cracked);
@@ -173,6 +182,9 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
       case ObjectType::Plane:
         add_mesh(plane_mesh(o), mat, object_id);
         break;
+      case ObjectType::Patch:
+        add_job(mat, object_id, patch_surface(o, make_displacement(o.displacement)), nullptr, nullptr, nullptr);
+        break;
       case ObjectType::Tree: {
         if (o.stress_bark && !(o.growth && !o.growth->cracks)) {
           c.jobs.push_back(stress_job(desc, o, bark_of(bark, oi, o), mat, object_id));
@@ -243,6 +255,7 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
           else
             parts = split_by_material(w, face_mat);
           for (auto& [part_mat, part] : parts) {
+            require_texcoords(o, part);
             if (o.displacement.type != DisplacementDesc::Type::None)
               add_job(part_mat, object_id, {}, std::make_shared<MeshData>(std::move(part)), make_displacement(o.displacement),
                       nullptr);
@@ -266,6 +279,7 @@ SceneContents load_scene_contents(const SceneDesc& desc, const BarkResults& bark
             for (auto& n : w.normals) n = (nrm * n).normalized();
             for (auto& t : w.tangents) t.head<3>() = transform_vector(o.transform.matrix, t.head<3>()).normalized();
             if (w.normals.empty()) compute_vertex_normals(w);
+            require_texcoords(o, w);
             if (o.displacement.type != DisplacementDesc::Type::None)
               add_job(resolve(m), object_id, {}, std::make_shared<MeshData>(std::move(w)), make_displacement(o.displacement),
                       nullptr);

@@ -1,13 +1,24 @@
 #include "scene/displacement.h"
 
+#include "scene/displacement_map.h"
 #include "util/hash.h"
 #include "util/noise.h"
 
 namespace phellem {
 
+DisplacementFn zero_displacement() {
+  return [](const Vec2f&, const Vec3f&) { return 0.0f; };
+}
+
 DisplacementFn make_displacement(const DisplacementDesc& d) {
   const uint32_t seed = fold_seed(d.seed);  // the noise takes 32 bits; identity below 2^32
-  if (d.type == DisplacementDesc::Type::None || d.amplitude == 0.0f) return [](const Vec2f&, const Vec3f&) { return 0.0f; };
+  if (d.type == DisplacementDesc::Type::Image && d.map) {
+    return [map = d.map, scale = d.scale, mid = d.midlevel, repeat = d.uv_repeat, clamp = d.clamp](const Vec2f& uv, const Vec3f&) {
+      return scale * (sample_displacement_map(*map, uv * repeat, clamp) - mid);
+    };
+  }
+  if (d.type != DisplacementDesc::Type::Grooves && d.type != DisplacementDesc::Type::Noise) return zero_displacement();
+  if (d.amplitude == 0.0f) return zero_displacement();
   if (d.type == DisplacementDesc::Type::Noise) {
     return [d, seed](const Vec2f&, const Vec3f& p) { return d.amplitude * fbm(p * d.frequency, seed, 4); };
   }

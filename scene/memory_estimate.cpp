@@ -17,6 +17,7 @@
 #include "bark/strips/strip_model.h"
 #include "scene/dicing_params.h"
 #include "scene/displacement.h"
+#include "scene/object_meshes.h"
 #include "scene/mesh_source.h"
 #include "scene/tree_surface.h"
 #include "util/errors.h"
@@ -332,6 +333,8 @@ MemoryItem geometry_item(const SceneDesc& desc, int height, const std::map<size_
     } else if (o.type == ObjectType::Tree) {
       for (const TreePart& part : build_tree(o.tree, make_displacement(o.tree.displacement)))
         diced += double(estimate_triangles(part.surface, d));
+    } else if (o.type == ObjectType::Patch) {
+      diced += double(estimate_triangles(patch_surface(o, make_displacement(o.displacement)), d));
     } else if (o.type == ObjectType::Mesh) {
       const bool displaced = o.displacement.type != DisplacementDesc::Type::None;
       double n = 0;

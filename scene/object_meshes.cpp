@@ -1,5 +1,6 @@
 #include "scene/object_meshes.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace phellem {
@@ -16,6 +17,59 @@ MeshData plane_mesh(const ObjectDesc& o) {
     m.tangents.emplace_back(f.s.x(), f.s.y(), f.s.z(), 1.0f);
   }
   m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+PatchFrame patch_frame(const ObjectDesc& o) {
+  PatchFrame f;
+  f.centre = o.point;
+  f.normal = o.normal.normalized();
+  f.up = (o.up - o.up.dot(f.normal) * f.normal).normalized();
+  f.right = f.up.cross(f.normal);  // right, up, normal: right-handed, so the patch faces along +normal
+  return f;
+}
+
+namespace {
+
+constexpr float kPatchCell = 0.02f;  // m: the dicer's patches on a `patch` object
+
+Vec3f patch_point(const PatchFrame& f, const Vec2f& size, float u, float v) {
+  return f.centre + (u - 0.5f) * size.x() * f.right + (v - 0.5f) * size.y() * f.up;
+}
+
+}  // namespace
+
+ParametricSurface patch_surface(const ObjectDesc& o, const DisplacementFn& disp) {
+  const PatchFrame f = patch_frame(o);
+  ParametricSurface s;
+  s.position = [f, size = o.size, disp](float u, float v, float* offset) {
+    const Vec3f p = patch_point(f, size, u, v);
+    const float d = disp ? disp(Vec2f(u, v), p) : 0.0f;
+    if (offset) *offset = d;
+    return Vec3f(p + d * f.normal);
+  };
+  s.texcoord = [](float u, float v) { return Vec2f(u, v); };
+  s.patches_u = std::clamp(int(std::ceil(o.size.x() / kPatchCell)), 1, 4096);
+  s.patches_v = std::clamp(int(std::ceil(o.size.y() / kPatchCell)), 1, 4096);
+  return s;
+}
+
+MeshData patch_mesh(const ObjectDesc& o, int nu, int nv) {
+  const PatchFrame f = patch_frame(o);
+  MeshData m;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const float u = float(i) / float(nu), v = float(j) / float(nv);
+      m.positions.push_back(patch_point(f, o.size, u, v));
+      m.normals.push_back(f.normal);
+      m.uvs.emplace_back(u, v);
+      m.tangents.emplace_back(f.right.x(), f.right.y(), f.right.z(), 1.0f);
+    }
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const uint32_t a = uint32_t(j * (nu + 1) + i), b = a + 1, c = a + uint32_t(nu) + 1, e = c + 1;
+      m.indices.insert(m.indices.end(), {a, b, e, a, e, c});
+    }
   return m;
 }
 

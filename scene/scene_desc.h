@@ -71,14 +71,25 @@ struct LightDesc {
   float ground_albedo = 0.3f;          // sky: lower hemisphere
 };
 
-// Procedural displacement along the normal, evaluated while dicing.
+struct DisplacementMap;  // scene/displacement_map.h
+
+// Displacement along the normal, evaluated while dicing: procedural, or a height map image
+// (scene/displacement_map.h) looked up at the surface's texture coordinates.
 struct DisplacementDesc {
-  enum class Type { None, Grooves, Noise } type = Type::None;
+  enum class Type { None, Grooves, Noise, Image } type = Type::None;
   float amplitude = 0.0f;   // metres; grooves cut inwards by up to this depth
   float frequency = 12.0f;  // grooves around the circumference / noise cycles per metre
   float sharpness = 3.0f;   // grooves: ridge sharpness
   float waviness = 0.3f;    // grooves: lateral wander of the furrows
   uint64_t seed = 1;        // folded to the noise's 32 bits (fold_seed)
+  // image: offset = scale × (value − midlevel) metres, value the map's code value / largest
+  // code (integer images) or its float value (EXR), at texcoord × uv_repeat.
+  std::string file;  // resolved path
+  float scale = 0.01f;
+  float midlevel = 0.5f;
+  float uv_repeat = 1.0f;
+  bool clamp = false;  // "wrap": "clamp" (edges extend) or "repeat" (the default: the map tiles)
+  std::shared_ptr<const DisplacementMap> map;  // read by the scene parser
 };
 
 struct TransformDesc {
@@ -101,8 +112,9 @@ struct TreeDesc {
   std::shared_ptr<const StripBarkDesc> strip_bark;  // `"bark": {"model": "strips"}`, if any
   std::vector<float> radius;                        // radius profile, equally spaced in arc length
   std::vector<BranchDesc> branches;
-  DisplacementDesc displacement;
-  float uv_repeat = 1.0f;  // texture repeats around the circumference
+  DisplacementDesc displacement;          // procedural, at (θ / 2π, arc length in metres)
+  DisplacementDesc texture_displacement;  // an image's, at the texture coordinates (as the albedo)
+  float uv_repeat = 1.0f;                 // texture repeats around the circumference
 };
 
 // A mesh made by Phellem instead of read from a file (bark/geometry/procedural_meshes.h):
@@ -123,7 +135,10 @@ struct ProceduralMeshDesc {
   float branch_height = 0.45f;  // where the branch's axis leaves the trunk's (fraction of height)
 };
 
-enum class ObjectType { Sphere, Plane, Mesh, Tree };
+// A patch (`"type": "patch"`) is a flat rectangle of bark at a known physical size, diced and
+// displaced like a mesh: texture coordinates run from (0, 0) at its bottom-left corner to
+// (1, 1) at its top-right, so a scan's height map and albedo cover it once.
+enum class ObjectType { Sphere, Plane, Mesh, Tree, Patch };
 struct ObjectDesc {
   ObjectType type = ObjectType::Sphere;
   Location where;
@@ -135,8 +150,9 @@ struct ObjectDesc {
   // plane
   Vec3f point{0, 0, 0};
   Vec3f normal{0, 1, 0};
-  Vec2f size{10, 10};
+  Vec2f size{10, 10};     // plane, patch (metres: width along `right`, height along `up`)
   float uv_scale = 1.0f;  // plane: metres per texture repeat
+  Vec3f up{0, 1, 0};      // patch: its v direction (made orthogonal to the normal)
   // mesh
   std::string file;  // empty for a procedural mesh
   std::optional<ProceduralMeshDesc> procedural;

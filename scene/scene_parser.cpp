@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "io/builtin_files.h"
+#include "scene/displacement_map.h"
 #include "scene/json_reader.h"
 #include "scene/procedural_mesh_desc.h"
 #include "util/input_file.h"
@@ -321,22 +322,57 @@ Mat4f parse_transform(JsonObject o) {
   return a.matrix();
 }
 
-DisplacementDesc parse_displacement(JsonObject o) {
+// Bounds of an image displacement: a scale beyond metres, or a map repeated more often than a
+// float texture coordinate can resolve, is a typing mistake, not bark.
+constexpr float kMaxDisplacementScale = 10.0f;  // metres per unit of the map's value
+constexpr float kMaxUvRepeat = 10000.0f;
+constexpr float kMaxPatchSize = 1000.0f;  // metres: a patch is a piece of bark, not a landscape
+
+void parse_image_displacement(const Ctx& c, JsonObject& o, DisplacementDesc& d) {
+  auto file = o.at("file");
+  d.file = c.resolve(file);
+  if (auto v = o.get("scale")) {
+    d.scale = v->number();
+    if (std::abs(d.scale) > kMaxDisplacementScale)
+      v->fail("scale must lie in [-" + std::to_string(int(kMaxDisplacementScale)) + ", " +
+              std::to_string(int(kMaxDisplacementScale)) + "] metres per unit of the map's value, found " + std::to_string(d.scale));
+  }
+  if (auto v = o.get("midlevel")) d.midlevel = v->number();
+  if (auto v = o.get("uv_repeat")) {
+    d.uv_repeat = v->positive();
+    if (d.uv_repeat > kMaxUvRepeat)
+      v->fail("uv_repeat must lie in (0, " + std::to_string(int(kMaxUvRepeat)) + "], found " + std::to_string(d.uv_repeat));
+  }
+  if (auto v = o.get("wrap")) {
+    const std::string w = v->string();
+    if (w != "repeat" && w != "clamp") v->fail("unknown wrap \"" + printable(w) + "\"; allowed: repeat, clamp");
+    d.clamp = w == "clamp";
+  }
+  d.map = std::make_shared<const DisplacementMap>(read_displacement_map(d.file));
+}
+
+DisplacementDesc parse_displacement(const Ctx& c, JsonObject o) {
   DisplacementDesc d;
   const std::string type = o.string("type");
   if (type == "grooves")
     d.type = DisplacementDesc::Type::Grooves;
   else if (type == "noise")
     d.type = DisplacementDesc::Type::Noise;
+  else if (type == "image")
+    d.type = DisplacementDesc::Type::Image;
   else if (type == "none")
     d.type = DisplacementDesc::Type::None;
   else
-    o.fail("type", "unknown displacement \"" + type + "\"; allowed: none, grooves, noise");
-  if (auto v = o.get("amplitude")) d.amplitude = v->non_negative();
-  if (auto v = o.get("frequency")) d.frequency = v->positive();
-  if (auto v = o.get("sharpness")) d.sharpness = v->positive();
-  if (auto v = o.get("waviness")) d.waviness = v->non_negative();
-  if (auto v = o.get("seed")) d.seed = v->seed();
+    o.fail("type", "unknown displacement \"" + type + "\"; allowed: none, grooves, noise, image");
+  if (d.type == DisplacementDesc::Type::Image) {
+    parse_image_displacement(c, o, d);
+  } else {
+    if (auto v = o.get("amplitude")) d.amplitude = v->non_negative();
+    if (auto v = o.get("frequency")) d.frequency = v->positive();
+    if (auto v = o.get("sharpness")) d.sharpness = v->positive();
+    if (auto v = o.get("waviness")) d.waviness = v->non_negative();
+    if (auto v = o.get("seed")) d.seed = v->seed();
+  }
   o.finish();
   return d;
 }
@@ -443,6 +479,27 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
       }
     }
     if (auto v = o.get("uv_scale")) d.uv_scale = v->positive();
+  } else if (type == "patch") {
+    d.type = ObjectType::Patch;
+    d.point = o.vec3("center", Vec3f::Zero());
+    d.normal = Vec3f(0, 0, 1);
+    if (auto n = o.get("normal")) {
+      d.normal = n->vec3();
+      if (d.normal.norm() < 1e-6f) n->fail("normal must be non-zero");
+    }
+    d.normal.normalize();
+    if (auto u = o.get("up")) {
+      d.up = u->vec3();
+      if (d.up.norm() < 1e-6f) u->fail("up must be non-zero");
+    }
+    d.up.normalize();
+    if (std::abs(d.up.dot(d.normal)) > 0.999f)
+      o.fail(o.has("up") ? "up" : "normal", "up and normal must not be parallel (up gives the patch's v direction within its plane)");
+    auto s = o.at("size");
+    d.size = s.is_number() ? Vec2f::Constant(s.positive()) : s.vec2();
+    if ((d.size.array() <= 0.0f).any() || (d.size.array() > kMaxPatchSize).any())
+      s.fail("size must lie in (0, " + std::to_string(int(kMaxPatchSize)) + "] metres, found " + std::to_string(d.size.x()) + " × " +
+             std::to_string(d.size.y()));
   } else if (type == "mesh") {
     d.type = ObjectType::Mesh;
     if (o.has("file") == o.has("procedural"))
@@ -492,15 +549,20 @@ ObjectDesc parse_object(const Ctx& c, JsonObject o, const SceneDesc& scene) {
                         "a vertex attribute comes from a mesh file; a tree has none (paint an image \"file\", or use strokes with a \"direction\")");
     }
   } else {
-    o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, mesh, tree");
+    o.fail("type", "unknown object type \"" + type + "\"; allowed: sphere, plane, patch, mesh, tree");
   }
   if (auto v = o.get("displacement")) {
     if (d.type == ObjectType::Sphere || d.type == ObjectType::Plane)
-      v->fail("displacement is supported on mesh and tree objects");
-    d.displacement = parse_displacement(v->object());
+      v->fail("displacement is supported on mesh, tree and patch objects (a flat square of bark: \"type\": \"patch\")");
+    d.displacement = parse_displacement(c, v->object());
   }
   o.finish();
-  if (d.type == ObjectType::Tree) d.tree.displacement = d.displacement;
+  if (d.type == ObjectType::Tree) {
+    if (d.displacement.type == DisplacementDesc::Type::Image)
+      d.tree.texture_displacement = d.displacement;
+    else
+      d.tree.displacement = d.displacement;
+  }
   return d;
 }
 

@@ -1,30 +1,34 @@
 #include "scene/tree_surface.h"
 
+#include "scene/displacement.h"
+
 namespace phellem {
 
 namespace {
 
 using bark::GeneralizedCylinder;
 
-TreePart make_part(std::shared_ptr<const GeneralizedCylinder> cyl, const DisplacementFn& disp, float uv_repeat,
-                   float mean_radius) {
+TreePart make_part(std::shared_ptr<const GeneralizedCylinder> cyl, const DisplacementFn& disp, const DisplacementFn& texture_disp,
+                   float uv_repeat, float mean_radius) {
   TreePart part;
   part.cylinder = cyl;
   const float L = float(cyl->length());
   const float circumference = kTwoPi * mean_radius;
+  auto texcoord = [uv_repeat, L, circumference](float u, float v) {
+    return Vec2f(u * uv_repeat, v * L / circumference * uv_repeat);
+  };
   part.surface.periodic_u = true;
-  part.surface.position = [cyl, disp, L](float u, float v, float* offset) {
+  part.surface.position = [cyl, disp, texture_disp, texcoord, L](float u, float v, float* offset) {
     const double theta = 2.0 * M_PI * double(u);
     const Eigen::Vector3d p = cyl->position(v, theta);
     const Eigen::Vector3d n = cyl->normal(v, theta);
     const Vec3f pf = p.cast<float>();
-    const float d = disp(Vec2f(u, v * L), pf);
+    float d = disp(Vec2f(u, v * L), pf);
+    if (texture_disp) d += texture_disp(texcoord(u, v), pf);
     if (offset) *offset = d;
     return Vec3f(pf + n.cast<float>() * d);
   };
-  part.surface.texcoord = [uv_repeat, L, circumference](float u, float v) {
-    return Vec2f(u * uv_repeat, v * L / circumference * uv_repeat);
-  };
+  part.surface.texcoord = texcoord;
   // Patches roughly square in world space; edges are then refined per patch edge.
   part.surface.patches_u = 16;
   part.surface.patches_v = std::clamp(int(std::ceil(L / (circumference / 16.0f))), 1, 4096);
@@ -38,7 +42,8 @@ float mean(const std::vector<float>& r) {
 }
 
 void add_branches(const GeneralizedCylinder& parent, int parent_index, const std::vector<BranchDesc>& branches,
-                  const std::function<DisplacementFn(size_t)>& disp, float uv_repeat, std::vector<TreePart>& out) {
+                  const std::function<DisplacementFn(size_t)>& disp, const DisplacementFn& texture_disp, float uv_repeat,
+                  std::vector<TreePart>& out) {
   for (const BranchDesc& b : branches) {
     const Eigen::Vector3d a = parent.axis_point(b.attach);
     const Eigen::Matrix3d f = parent.frame(b.attach);
@@ -52,10 +57,10 @@ void add_branches(const GeneralizedCylinder& parent, int parent_index, const std
     }
     std::vector<double> radius(b.radius.begin(), b.radius.end());
     auto cyl = std::make_shared<GeneralizedCylinder>(axis, radius, f.col(0));
-    out.push_back(make_part(cyl, disp(out.size()), uv_repeat, mean(b.radius)));
+    out.push_back(make_part(cyl, disp(out.size()), texture_disp, uv_repeat, mean(b.radius)));
     out.back().parent = parent_index;
     out.back().attach = b.attach;
-    add_branches(*cyl, int(out.size()) - 1, b.branches, disp, uv_repeat, out);
+    add_branches(*cyl, int(out.size()) - 1, b.branches, disp, texture_disp, uv_repeat, out);
   }
 }
 
@@ -71,8 +76,11 @@ std::vector<TreePart> build_tree(const TreeDesc& desc, const std::function<Displ
   std::vector<double> radius(desc.radius.begin(), desc.radius.end());
   auto trunk = std::make_shared<GeneralizedCylinder>(axis, radius, Eigen::Vector3d::UnitX());
   std::vector<TreePart> parts;
-  parts.push_back(make_part(trunk, disp(0), desc.uv_repeat, mean(desc.radius)));
-  add_branches(*trunk, 0, desc.branches, disp, desc.uv_repeat, parts);
+  // An image displacement is looked up where the albedo texture is: at the texcoords.
+  const DisplacementFn texture_disp =
+      desc.texture_displacement.type == DisplacementDesc::Type::None ? DisplacementFn{} : make_displacement(desc.texture_displacement);
+  parts.push_back(make_part(trunk, disp(0), texture_disp, desc.uv_repeat, mean(desc.radius)));
+  add_branches(*trunk, 0, desc.branches, disp, texture_disp, desc.uv_repeat, parts);
   return parts;
 }
 

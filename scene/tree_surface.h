@@ -19,7 +19,8 @@ struct TreePart {
 };
 
 // Displacement uv for trees is (θ / 2π, arc length in metres) so patterns have constant
-// density along trunks of varying length.
+// density along trunks of varying length. The tree's image displacement
+// (TreeDesc::texture_displacement) is added at the texcoords, as the albedo is looked up.
 std::vector<TreePart> build_tree(const TreeDesc& desc, const DisplacementFn& displacement);
 // The same with one displacement per part (index in the returned order: trunk, then the
 // branches depth-first).
