@@ -18,8 +18,12 @@ std::vector<NamedStatistic> named_lit_statistics(const LitStatistics& s) {
   v.push_back({"median_luminance", "", "median Rec.709 luminance (depends on exposure; not scored)", s.median_luminance, false});
   for (int k = 0; k < kLitPercentileCount; ++k) {
     const double q = kLitParams.percentiles[size_t(k)];
-    v.push_back({"log_luminance_p" + std::string(q < 10 ? "0" : "") + number(q), "ln",
-                 "P" + number(q) + " of ln Y − ln median(Y)", s.log_luminance_percentiles[size_t(k)], true});
+    // Appended piecewise: "P" + number(q) trips a known false -Wrestrict of GCC 12 at -O3.
+    std::string description = "P";
+    description += number(q);
+    description += " of ln Y − ln median(Y)";
+    v.push_back({"log_luminance_p" + std::string(q < 10 ? "0" : "") + number(q), "ln", description,
+                 s.log_luminance_percentiles[size_t(k)], true});
   }
   v.push_back({"near_black_share", "", "share of pixels darker than " + number(100 * kLitParams.near_black_ratio) +
                                           " % of the median luminance", s.near_black_share, true});
