@@ -130,30 +130,46 @@ double dog_contrast(const Grid& full, double sigma_px, double min_sigma_px) {
 }
 
 // The edge-direction histogram of G(σ)∗ℓ, weighted by the gradient magnitude (central
-// differences, one-sided on the border; only at valid pixels).
+// differences, one-sided on the border; only at valid pixels). Rows in parallel, each row's
+// sums kept apart and added in row order (reproducible).
 void orientation(const Grid& l, const std::vector<uint8_t>& valid, double sigma_px, LitStatistics& s) {
   const std::vector<float> ls = masked_blur(l.v, l.m, l.w, l.h, sigma_px);
   const int w = l.w, h = l.h;
+  constexpr size_t kRow = kOrientationHistogramBins + 3;  // the bins, Σ|∇ℓ|, Σ|∇ℓ|·cos 2θ, Σ|∇ℓ|·sin 2θ
+  std::vector<double> rows(size_t(h) * kRow, 0.0);
   auto at = [&](int x, int y) { return double(ls[size_t(y) * size_t(w) + size_t(x)]); };
-  double total = 0;
-  std::complex<double> axial = 0;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      if (!valid.empty() && !valid[size_t(y) * size_t(w) + size_t(x)]) continue;
-      const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, w - 1), y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h - 1);
-      const double gx = (at(x1, y) - at(x0, y)) / std::max(x1 - x0, 1);
-      const double gy_up = -(at(x, y1) - at(x, y0)) / std::max(y1 - y0, 1);  // rows run down: y up is −row
-      const double mag = std::hypot(gx, gy_up);
-      if (mag <= 0) continue;
-      double theta = std::atan2(gy_up, gx) / kRad + 90;  // the edge runs across the gradient
-      theta = std::fmod(theta + 360, 180.0);
-      const int bin = int(std::floor((theta + 5) / 10)) % kOrientationHistogramBins;  // bins centred on 0°, 10°, …
-      s.orientation_hist[size_t(bin)] += mag;
-      total += mag;
-      axial += mag * std::polar(1.0, 2 * theta * kRad);
+  tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& r) {
+    for (int y = r.begin(); y < r.end(); ++y) {
+      double* row = &rows[size_t(y) * kRow];
+      const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, h - 1);
+      for (int x = 0; x < w; ++x) {
+        if (!valid.empty() && !valid[size_t(y) * size_t(w) + size_t(x)]) continue;
+        const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, w - 1);
+        const double gx = (at(x1, y) - at(x0, y)) / std::max(x1 - x0, 1);
+        const double gy = -(at(x, y1) - at(x, y0)) / std::max(y1 - y0, 1);  // rows run down: y up is −row
+        const double mag2 = gx * gx + gy * gy;
+        if (mag2 <= 0) continue;
+        const double mag = std::sqrt(mag2);
+        // The edge runs across the gradient: θ = φ + 90°, φ = atan2(gy, gx), so
+        // e^{2iθ} = −(gx + i·gy)²/|∇|²: cos 2θ = (gy² − gx²)/|∇|², sin 2θ = −2·gx·gy/|∇|².
+        double theta = std::atan2(gy, gx) / kRad + 90;  // in (−90°, 270°]
+        if (theta >= 180) theta -= 180;
+        if (theta < 0) theta += 180;
+        const int bin = int((theta + 5) / 10) % kOrientationHistogramBins;  // bins centred on 0°, 10°, …
+        row[bin] += mag;
+        row[kOrientationHistogramBins] += mag;
+        row[kOrientationHistogramBins + 1] += (gy * gy - gx * gx) / mag;
+        row[kOrientationHistogramBins + 2] += -2 * gx * gy / mag;
+      }
     }
+  });
+  std::vector<double> sum(kRow, 0.0);
+  for (int y = 0; y < h; ++y)
+    for (size_t k = 0; k < kRow; ++k) sum[k] += rows[size_t(y) * kRow + k];
+  const double total = sum[kOrientationHistogramBins];
   if (total <= 0) return;
-  for (double& v : s.orientation_hist) v /= total;
+  for (int k = 0; k < kOrientationHistogramBins; ++k) s.orientation_hist[size_t(k)] = sum[size_t(k)] / total;
+  const std::complex<double> axial(sum[kOrientationHistogramBins + 1], sum[kOrientationHistogramBins + 2]);
   s.orientation_anisotropy = std::abs(axial) / total;
   double mean = 0.5 * std::arg(axial) / kRad;
   if (mean < 0) mean += 180;
@@ -203,10 +219,15 @@ LitStatistics lit_statistics(const LitImage& im, const std::string& name, const 
 
   LitStatistics s;
   s.width = w, s.height = h, s.px_per_cm = im.px_per_cm;
-  std::vector<float> Y(n, 0.f), Y_valid;
+  std::vector<float> Y(n, 0.f);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1 << 14), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i)
+      if (ok(i)) Y[i] = float(luminance(&im.rgb[3 * i]));
+  });
+  std::vector<float> Y_valid;
   Y_valid.reserve(n);
   for (size_t i = 0; i < n; ++i)
-    if (ok(i)) Y_valid.push_back(Y[i] = float(luminance(&im.rgb[3 * i])));
+    if (ok(i)) Y_valid.push_back(Y[i]);
   s.valid_pixels = int(Y_valid.size());
   const double M = median(Y_valid);
   if (!(M > 0))
@@ -218,13 +239,17 @@ LitStatistics lit_statistics(const LitImage& im, const std::string& name, const 
   Grid l{w, h, std::vector<float>(n, 0.f), {}};
   if (!im.valid.empty()) l.m.assign(im.valid.begin(), im.valid.end());
   const double floor_Y = p.luminance_floor_ratio * M, black_Y = p.near_black_ratio * M;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1 << 14), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i)
+      if (ok(i)) l.v[i] = float(std::log(std::max(double(Y[i]), floor_Y) / M));
+  });
   std::vector<float> l_valid;
   l_valid.reserve(Y_valid.size());
   size_t black = 0;
   for (size_t i = 0; i < n; ++i) {
     if (!ok(i)) continue;
     if (Y[i] < black_Y) ++black;
-    l_valid.push_back(l.v[i] = float(std::log(std::max(double(Y[i]), floor_Y) / M)));
+    l_valid.push_back(l.v[i]);
   }
   s.near_black_share = double(black) / double(Y_valid.size());
   const std::vector<double> q = percentiles(l_valid, std::vector<double>(p.percentiles.begin(), p.percentiles.end()));
