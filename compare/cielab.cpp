@@ -18,7 +18,7 @@ double lab_f(double t) {
 Eigen::Vector3d linear_rec709_to_lab(const Eigen::Vector3d& rgb) {
   // IEC 61966-2-1:1999, linear sRGB (Rec.709 primaries, D65) → XYZ.
   static const Eigen::Matrix3d M = (Eigen::Matrix3d() << 0.4124, 0.3576, 0.1805,  //
-                                    0.2126, 0.7152, 0.0722,                          //
+                                    0.2126, 0.7152, 0.0722,                       //
                                     0.0193, 0.1192, 0.9505)
                                        .finished();
   static const Eigen::Vector3d white = M * Eigen::Vector3d::Ones();  // D65: (0.9505, 1, 1.0890)

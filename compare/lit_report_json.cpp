@@ -17,8 +17,8 @@ nlohmann::json side_json(const LitStatistics& s) {
 
 }  // namespace
 
-nlohmann::json lit_comparison_json(const LitStatistics& reference, const LitStatistics& candidate,
-                                   const LitComparison& c, const LitThresholds& t) {
+nlohmann::json lit_comparison_json(const LitStatistics& reference, const LitStatistics& candidate, const LitComparison& c,
+                                   const LitThresholds& t) {
   nlohmann::json j;
   j["score"] = c.score;
   j["verdict"] = c.verdict;

@@ -9,13 +9,13 @@ namespace {
 
 // The floor of each relative difference: differences between values both under it count as
 // small (a near-black share of 0.001 against 0.002 is not a 50 % change in the picture).
-constexpr double kPercentileFloor = 0.05;   // ln units: 5 % in luminance
-constexpr double kNearBlackFloor = 0.01;    // 1 % of the pixels
+constexpr double kPercentileFloor = 0.05;  // ln units: 5 % in luminance
+constexpr double kNearBlackFloor = 0.01;   // 1 % of the pixels
 constexpr double kAnisotropyFloor = 0.05;
 constexpr double kBandShareFloor = 0.01;
-constexpr double kContrastFloor = 0.01;     // ln units
-constexpr double kColourStdFloor = 1;       // CIELAB units
-constexpr double kChromaFloor = 5;          // ΔE*ab: casts below this are all "neutral"
+constexpr double kContrastFloor = 0.01;       // ln units
+constexpr double kColourStdFloor = 1;         // CIELAB units
+constexpr double kChromaFloor = 5;            // ΔE*ab: casts below this are all "neutral"
 constexpr double kMaxOrientationEmdDeg = 90;  // the largest axial EMD (two peaks 90° apart)
 
 double signed_relative(double reference, double candidate, double floor) {
@@ -85,8 +85,8 @@ LitComparison compare_lit(const LitStatistics& ref, const LitStatistics& cand, c
   const std::vector<SpectrumBand> br = common_bands(ref.bands, cand.bands), bc = common_bands(cand.bands, ref.bands);
   double fine_r = 0, fine_c = 0;
   for (size_t k = 0; k < br.size(); ++k) {
-    rows.relative("band_" + number(br[k].lo_cycles_per_cm) + "_" + number(br[k].hi_cycles_per_cm), "spectrum",
-                  br[k].share, bc[k].share, kBandShareFloor);
+    rows.relative("band_" + number(br[k].lo_cycles_per_cm) + "_" + number(br[k].hi_cycles_per_cm), "spectrum", br[k].share,
+                  bc[k].share, kBandShareFloor);
     if (br[k].lo_cycles_per_cm >= t.fine_band_cycles_per_cm) fine_r += br[k].share, fine_c += bc[k].share;
   }
   for (int k = 0; k < kLitContrastScales; ++k)
@@ -119,13 +119,13 @@ LitComparison compare_lit(const LitStatistics& ref, const LitStatistics& cand, c
   c.verdict = c.score <= t.same_score ? "same look" : c.score <= t.close_score ? "close" : "different";
 
   // The words, each from the signed differences of its statistics (candidate − reference).
-  const double dark = strongest({rows.signed_of("near_black_share"), -rows.signed_of("log_luminance_p01"),
-                                 -rows.signed_of("log_luminance_p05")});
+  const double dark =
+      strongest({rows.signed_of("near_black_share"), -rows.signed_of("log_luminance_p01"), -rows.signed_of("log_luminance_p05")});
   if (dark > t.word) c.words.push_back("fissures too dark");
   if (dark < -t.word) c.words.push_back("fissures too light");
   const double fine_contrast = rows.signed_of("local_contrast_" + number(kLitParams.contrast_sigma_cm[0]) + "cm");
-  const double fine = fine_r + fine_c > 0 ? 0.5 * (fine_contrast + signed_relative(fine_r, fine_c, kBandShareFloor))
-                                          : fine_contrast;
+  const double fine =
+      fine_r + fine_c > 0 ? 0.5 * (fine_contrast + signed_relative(fine_r, fine_c, kBandShareFloor)) : fine_contrast;
   if (fine < -t.word) c.words.push_back("ridges too smooth");
   if (fine > t.word) c.words.push_back("too much fine detail");
   const double relief = 0.5 * (rows.signed_of("local_contrast_" + number(kLitParams.contrast_sigma_cm[1]) + "cm") +

@@ -44,8 +44,9 @@ struct LitComparison {
   std::vector<std::string> words;  // e.g. "fissures too dark", "too warm"; empty when nothing stands out
 };
 
-// Candidate against reference (the order matters for the signs and the words). Spectrum bands
-// are compared over the octaves both have, their shares renormalised to sum 1 over those.
+// Candidate against reference (the order matters for the signs and the words). Both were measured
+// with kLitParams (the rows are named after its percentiles and scales). Spectrum bands are
+// compared over the octaves both have, their shares renormalised to sum 1 over those.
 LitComparison compare_lit(const LitStatistics& reference, const LitStatistics& candidate,
                           const LitThresholds& thresholds = kLitThresholds);
 

@@ -25,8 +25,9 @@ std::vector<NamedStatistic> named_lit_statistics(const LitStatistics& s) {
     v.push_back({"log_luminance_p" + std::string(q < 10 ? "0" : "") + number(q), "ln", description,
                  s.log_luminance_percentiles[size_t(k)], true});
   }
-  v.push_back({"near_black_share", "", "share of pixels darker than " + number(100 * kLitParams.near_black_ratio) +
-                                          " % of the median luminance", s.near_black_share, true});
+  v.push_back({"near_black_share", "",
+               "share of pixels darker than " + number(100 * kLitParams.near_black_ratio) + " % of the median luminance",
+               s.near_black_share, true});
   v.push_back({"orientation_anisotropy", "", "how strongly the edges share one direction (0 isotropic, 1 one direction)",
                s.orientation_anisotropy, true});
   v.push_back({"orientation_mean_deg", "°", "mean edge direction (90° = along the trunk)", s.orientation_mean_deg, false});

@@ -46,21 +46,21 @@ void check(const LitImage& im, const std::string& name, const LitParams& p) {
     fail("the scale is " + fmt(im.px_per_cm) + " px/cm; the lit statistics need at least " + fmt(p.min_px_per_cm) +
          " px/cm (the finest contrast scale, " + fmt(p.contrast_sigma_cm[0]) + " cm, must be ≥ 1 px)");
   if (im.width < p.min_side_px || im.height < p.min_side_px)
-    fail("the image is " + std::to_string(im.width) + "×" + std::to_string(im.height) +
-         " px; the lit statistics need at least " + std::to_string(p.min_side_px) + " px on each side");
+    fail("the image is " + std::to_string(im.width) + "×" + std::to_string(im.height) + " px; the lit statistics need at least " +
+         std::to_string(p.min_side_px) + " px on each side");
   size_t valid = 0;
   for (size_t i = 0; i < n; ++i) {
     if (!im.valid.empty() && !im.valid[i]) continue;
     ++valid;
     for (int c = 0; c < 3; ++c)
       if (!std::isfinite(im.rgb[3 * i + size_t(c)]))
-        fail("pixel (" + std::to_string(i % size_t(im.width)) + ", " + std::to_string(i / size_t(im.width)) +
-             ") is " + fmt(im.rgb[3 * i + size_t(c)]) + " in channel " + std::string(1, "RGB"[c]) +
+        fail("pixel (" + std::to_string(i % size_t(im.width)) + ", " + std::to_string(i / size_t(im.width)) + ") is " +
+             fmt(im.rgb[3 * i + size_t(c)]) + " in channel " + std::string(1, "RGB"[c]) +
              "; every valid pixel must be finite (mask it out to skip it)");
   }
   if (valid < size_t(p.min_valid_pixels))
-    fail("the mask keeps " + std::to_string(valid) + " of " + std::to_string(n) +
-         " pixels; the lit statistics need at least " + std::to_string(p.min_valid_pixels) + " valid pixels");
+    fail("the mask keeps " + std::to_string(valid) + " of " + std::to_string(n) + " pixels; the lit statistics need at least " +
+         std::to_string(p.min_valid_pixels) + " valid pixels");
 }
 
 // G(σ)∗(v·m) / G(σ)∗m, the blur of the valid values alone (Knutsson & Westin 1993, "Normalized
@@ -186,8 +186,8 @@ LitColour colour(const LitImage& im, double exposure) {
         keep[i] = 0;
         continue;
       }
-      const Eigen::Vector3d lab = linear_rec709_to_lab(
-          exposure * Eigen::Vector3d(im.rgb[3 * i], im.rgb[3 * i + 1], im.rgb[3 * i + 2]));
+      const Eigen::Vector3d lab =
+          linear_rec709_to_lab(exposure * Eigen::Vector3d(im.rgb[3 * i], im.rgb[3 * i + 1], im.rgb[3 * i + 2]));
       L[i] = float(lab[0]);
       a[i] = float(lab[1]);
       b[i] = float(lab[2]);
@@ -231,8 +231,9 @@ LitStatistics lit_statistics(const LitImage& im, const std::string& name, const 
   s.valid_pixels = int(Y_valid.size());
   const double M = median(Y_valid);
   if (!(M > 0))
-    throw UserError(name, "", "the median luminance of the valid pixels is " + fmt(M) +
-                                  " (half of them or more are black or negative); nothing to measure relative to it");
+    throw UserError(name, "",
+                    "the median luminance of the valid pixels is " + fmt(M) +
+                        " (half of them or more are black or negative); nothing to measure relative to it");
   s.median_luminance = M;
 
   // ℓ = ln(max(Y, floor·M)/M): log-luminance relative to the median, so k·RGB changes nothing.

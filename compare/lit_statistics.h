@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "compare/octave_spectrum.h"       // SpectrumBand
+#include "compare/octave_spectrum.h"        // SpectrumBand
 #include "compare/orientation_histogram.h"  // OrientationHistogram (18 bins of 10°, centred on 0°, 10°, …)
 
 namespace phellem {
@@ -36,10 +36,10 @@ struct LitParams {
   double gradient_sigma_cm = 0.2;       // log-luminance smoothed by G(σ) before its gradient
   // Local contrast: the std of G(σ)∗ℓ − G(2σ)∗ℓ over the valid pixels, at each σ.
   std::array<double, kLitContrastScales> contrast_sigma_cm = {0.25, 1, 4};
-  double contrast_min_sigma_px = 4;     // coarser scales are measured on a 2^k box-decimated grid
-                                        // where σ is at least this many (decimated) pixels
-  double colour_median_Y = 0.18;        // colour: RGB scaled so the median luminance is this (L* 49.5)
-  double min_px_per_cm = 4;             // the finest contrast scale, 0.25 cm, is ≥ 1 px
+  double contrast_min_sigma_px = 4;  // coarser scales are measured on a 2^k box-decimated grid
+                                     // where σ is at least this many (decimated) pixels
+  double colour_median_Y = 0.18;     // colour: RGB scaled so the median luminance is this (L* 49.5)
+  double min_px_per_cm = 4;          // the finest contrast scale, 0.25 cm, is ≥ 1 px
   int min_side_px = 32;
   int min_valid_pixels = 1024;
 };
@@ -56,7 +56,7 @@ struct LitColour {
 struct LitStatistics {
   int width = 0, height = 0, valid_pixels = 0;
   double px_per_cm = 0;
-  double median_luminance = 0;  // median Y: depends on exposure, reported only
+  double median_luminance = 0;                                          // median Y: depends on exposure, reported only
   std::array<double, kLitPercentileCount> log_luminance_percentiles{};  // at LitParams::percentiles
   double near_black_share = 0;  // share of valid pixels with Y < near_black_ratio × median(Y)
   // Edge direction (gradient direction + 90°, counter-clockwise from +x with y up, mod 180°:

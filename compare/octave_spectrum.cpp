@@ -53,8 +53,8 @@ std::vector<SpectrumBand> octave_bands(int width, int height, double px_per_cm) 
   return bands;
 }
 
-std::vector<SpectrumBand> octave_band_power(const std::vector<float>& values, const std::vector<uint8_t>& valid,
-                                            int width, int height, double px_per_cm) {
+std::vector<SpectrumBand> octave_band_power(const std::vector<float>& values, const std::vector<uint8_t>& valid, int width,
+                                            int height, double px_per_cm) {
   const size_t w = size_t(width), n = w * size_t(height);
   if (values.size() != n || (!valid.empty() && valid.size() != n))
     throw std::invalid_argument("octave_band_power: size mismatch");

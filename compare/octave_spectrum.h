@@ -28,7 +28,7 @@ std::vector<SpectrumBand> octave_bands(int width, int height, double px_per_cm);
 // times a separable Tukey window (cosine tapers over 1/8 of each side), masked pixels 0, zero-padded to a 2·3·5-smooth size, go
 // through Eigen's FFT (kissfft); power at radius f = |(kx/W', ky/H')|·px_per_cm is summed per
 // band. All shares 0 when there is no power (a constant image).
-std::vector<SpectrumBand> octave_band_power(const std::vector<float>& values, const std::vector<uint8_t>& valid,
-                                            int width, int height, double px_per_cm);
+std::vector<SpectrumBand> octave_band_power(const std::vector<float>& values, const std::vector<uint8_t>& valid, int width,
+                                            int height, double px_per_cm);
 
 }  // namespace phellem

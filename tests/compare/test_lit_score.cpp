@@ -41,7 +41,8 @@ void print_groups(const char* what, const LitComparison& c) {
 // The darkest `share` of the pixels (by luminance) painted black.
 LitImage darker_fissures(const LitImage& im, double share) {
   std::vector<float> Y(im.rgb.size() / 3);
-  for (size_t i = 0; i < Y.size(); ++i) Y[i] = 0.2126f * im.rgb[3 * i] + 0.7152f * im.rgb[3 * i + 1] + 0.0722f * im.rgb[3 * i + 2];
+  for (size_t i = 0; i < Y.size(); ++i)
+    Y[i] = 0.2126f * im.rgb[3 * i] + 0.7152f * im.rgb[3 * i + 1] + 0.0722f * im.rgb[3 * i + 2];
   const double t = percentile(Y, 100 * share);
   LitImage o = im;
   for (size_t i = 0; i < Y.size(); ++i)

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <cmath>
 #include <limits>
 
 #include "compare/gaussian_blur.h"
@@ -56,7 +56,7 @@ TEST(LitStatistics, NearBlackShareIsExact) {
   EXPECT_EQ(s.near_black_share, 300.0 / 4096);
   EXPECT_FLOAT_EQ(float(s.median_luminance), 0.5f);
   EXPECT_NEAR(s.log_luminance_percentiles[0], std::log(0.02), 1e-6);  // P1 (41 pixels) lies in the 300
-  EXPECT_EQ(s.log_luminance_percentiles[7], 0);                        // P99: the median grey
+  EXPECT_EQ(s.log_luminance_percentiles[7], 0);                       // P99: the median grey
 }
 
 TEST(LitStatistics, BlackPixelsAreFlooredRelativeToTheMedian) {
@@ -96,8 +96,8 @@ TEST(LitStatistics, SineGratingPutsItsPowerInItsOctave) {
 TEST(LitStatistics, StripesPeakInTheirDirectionsBin) {
   for (double angle : {0.0, 30.0, 90.0, 140.0}) {
     const LitStatistics s = lit_statistics(test::sine_stripes(256, 10, 17, angle), "stripes");
-    const size_t peak = size_t(std::max_element(s.orientation_hist.begin(), s.orientation_hist.end()) -
-                               s.orientation_hist.begin());
+    const size_t peak =
+        size_t(std::max_element(s.orientation_hist.begin(), s.orientation_hist.end()) - s.orientation_hist.begin());
     EXPECT_EQ(peak, size_t(std::lround(angle / 10)) % 18) << angle << "°";
     EXPECT_GT(s.orientation_hist[peak], 0.9) << angle << "°";
     EXPECT_GT(s.orientation_anisotropy, 0.95) << angle << "°";
@@ -124,9 +124,9 @@ TEST(LitStatistics, DecimatedContrastMatchesTheFullResolutionBand) {
   const LitStatistics s = lit_statistics(im, "bark");
   std::vector<float> l(size_t(512) * 512);
   for (size_t i = 0; i < l.size(); ++i)
-    l[i] = float(std::log(std::max(0.2126 * im.rgb[3 * i] + 0.7152 * im.rgb[3 * i + 1] + 0.0722 * im.rgb[3 * i + 2],
-                                   1e-4 * s.median_luminance) /
-                          s.median_luminance));
+    l[i] = float(std::log(
+        std::max(0.2126 * im.rgb[3 * i] + 0.7152 * im.rgb[3 * i + 1] + 0.0722 * im.rgb[3 * i + 2], 1e-4 * s.median_luminance) /
+        s.median_luminance));
   for (int k = 0; k < kLitContrastScales; ++k) {
     const double sigma = kLitParams.contrast_sigma_cm[size_t(k)] * 10;
     const std::vector<float> a = gaussian_blur(l, 512, 512, sigma), b = gaussian_blur(l, 512, 512, 2 * sigma);
