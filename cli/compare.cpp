@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 
+#include "cli/compare_lit.h"
 #include "cli/outputs.h"
 #include "compare/compare_inputs.h"
 #include "compare/report_html.h"
@@ -33,6 +34,7 @@ struct CompareOptions {
   std::optional<int> threads;
   std::string memory_limit;
   bool quiet = false;
+  LitOptions lit;
 };
 
 // Peak memory of measuring one pixel at the common scale (the statistics' working images:
@@ -87,7 +89,7 @@ CompareOptions parse(const std::vector<std::string>& args) {
     auto value = [&]() -> std::string {
       if (i + 1 >= args.size()) bad(a, "missing value");
       const std::string& v = args[i + 1];
-      const bool labelled = a == "--scale" || a == "--albedo";
+      const bool labelled = a == "--scale" || a == "--albedo" || a == "--relief";
       const std::string key = a == "--output" ? "-o" : labelled ? a + " " + v.substr(0, v.find('=')) : a;
       if (!given.insert(key).second) bad(key, "given twice; give each option once");
       if (args[i + 1].empty()) bad(a, "the value is empty");
@@ -99,6 +101,25 @@ CompareOptions parse(const std::vector<std::string>& args) {
     } else if (a == "--albedo") {
       auto [s, v] = labelled(o, a, value());
       s->albedo_path = v;
+    } else if (a == "--relief") {
+      auto [s, v] = labelled(o, a, value());
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0' || !std::isfinite(x) || x <= 0 || x > kMaxRelief)
+        bad(a + " " + s->label, "expected metres per unit of the heights in (0, " + std::to_string(int(kMaxRelief)) + "], got \"" +
+                                    printable(v) + "\"");
+      (s == &o.a ? o.lit.relief_a : o.lit.relief_b) = x;
+    } else if (a == "--lit") {
+      o.lit.on = true;
+    } else if (a == "--no-sky") {
+      o.lit.no_sky = true;
+    } else if (a == "--spp") {
+      const std::string v = value();
+      char* end = nullptr;
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (end == v.c_str() || *end != '\0' || n < 1 || n > kMaxLitSpp)
+        bad(a, "must be an integer in [1, " + std::to_string(kMaxLitSpp) + "], got \"" + printable(v) + "\"");
+      o.lit.spp = int(n);
     } else if (a == "-o" || a == "--output") {
       o.html = value();
     } else if (a == "--json") {
@@ -121,6 +142,10 @@ CompareOptions parse(const std::vector<std::string>& args) {
       files.push_back(a);
     }
   }
+  if (!o.lit.on)
+    for (const char* lit_only : {"--relief A", "--relief B", "--spp"})
+      if (given.count(lit_only)) bad(lit_only, "is an option of the lit comparison: add --lit");
+  if (!o.lit.on && o.lit.no_sky) bad("--no-sky", "is an option of the lit comparison: add --lit");
   if (files.size() != 2)
     bad("compare", "expected two inputs A and B, got " + std::to_string(files.size()) + "\n" + compare_usage());
   o.a.path = files[0];
@@ -147,9 +172,12 @@ void print_summary(const CompareReport& r) {
 std::string compare_usage() {
   return "usage: phellem compare A B [--scale A=PX_PER_CM] [--scale B=PX_PER_CM] [--albedo A=FILE] [--albedo B=FILE]\n"
          "                      [-o REPORT.html] [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
+         "                      [--lit [--relief A=METRES] [--relief B=METRES] [--spp N] [--no-sky]]\n"
          "  A and B: a height map (8/16-bit PNG, JPEG, TIFF, EXR; white = high), a FractureField EXR from\n"
          "  `phellem simulate`, a render EXR (its displacement layer), or a patch.exr from `phellem fit`.\n"
-         "  --scale is required for plain images and renders; see docs/compare.md.\n";
+         "  --scale is required for plain images and renders; see docs/compare.md.\n"
+         "  --lit renders both as flat patches under one light rig (a raking 0.53° sun at 30°, a sky) and compares\n"
+         "  the pictures (A: the reference, B: the candidate); --relief gives a plain image's height range in metres.\n";
 }
 
 int run_compare(const std::vector<std::string>& args) {
@@ -167,6 +195,7 @@ int run_compare(const std::vector<std::string>& args) {
   const LoadedInput a = load_input(o.a);
   const LoadedInput b = load_input(o.b);
   check_compare_memory(a, b, o.memory_limit);
+  if (o.lit.on) return run_compare_lit(a, b, o.lit, out, o.html, o.json, o.quiet, o.threads.value_or(0));
   const CompareReport report = compare_inputs(a, b);
   if (!o.html.empty())
     out.write_bytes("-o", o.html, report_html(report));

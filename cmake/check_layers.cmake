@@ -10,8 +10,9 @@
 #   compare   -> util bark io scene compare       (not renderer: compare renders nothing)
 #   renderer  -> util bark io scene renderer      (not compare)
 #   preview   -> util bark io scene preview       (OpenGL; not renderer: no Embree)
+#   lookdev   -> util bark io scene compare renderer lookdev   (light rigs: renders for comparisons)
 #   cli       -> everything
-set(folders util bark io scene compare renderer preview cli)
+set(folders util bark io scene compare renderer preview lookdev cli)
 set(allowed_util util)
 set(allowed_bark util bark)
 set(allowed_io util bark io)
@@ -19,6 +20,7 @@ set(allowed_scene util bark io scene)
 set(allowed_compare util bark io scene compare)
 set(allowed_renderer util bark io scene renderer)
 set(allowed_preview util bark io scene preview)
+set(allowed_lookdev util bark io scene compare renderer lookdev)
 set(allowed_cli ${folders})
 # Embree is the path tracer's alone: these folders build and link without it.
 set(embree_banned util bark io scene compare preview)

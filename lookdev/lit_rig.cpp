@@ -1,0 +1,162 @@
+#include "lookdev/lit_rig.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+#include "io/image_file.h"
+#include "renderer/integrator.h"
+#include "renderer/render_scene.h"
+#include "scene/displacement_map.h"
+#include "util/errors.h"
+#include "util/hash.h"
+#include "util/temp_files.h"
+
+namespace phellem {
+
+namespace {
+
+// The camera stands far enough that the patch is seen almost orthographically: at a 2° field of
+// view a ray at the picture's edge leans 1° from the normal, so a 3 cm relief shifts by 0.5 mm.
+constexpr float kFovDeg = 2.0f;
+
+// The albedo as a float EXR (linear, three channels) that the texture system reads, named after
+// its content so that the texture cache converts a given albedo once.
+std::string write_albedo(const AlbedoField& a, const std::string& work_dir) {
+  uint32_t h = hash_u32(uint32_t(a.width)) ^ hash_u32(uint32_t(a.height) * 7919u);
+  for (float v : a.rgb) {
+    uint32_t bits;
+    std::memcpy(&bits, &v, 4);
+    h = hash_combine(h, bits);
+  }
+  char name[64];
+  std::snprintf(name, sizeof name, "phellem-lit-albedo-%08x.exr", h);
+  const std::string path = (std::filesystem::path(work_dir) / name).string();
+  OIIO::ImageSpec spec(a.width, a.height, 3, OIIO::TypeDesc::FLOAT);
+  spec.attribute("compression", "zip");
+  write_image_file(path, path, spec, OIIO::TypeDesc::FLOAT, a.rgb.data());
+  return path;
+}
+
+SceneDesc rig_scene(const LitSubject& s, const LitRig& rig, const std::string& albedo_file) {
+  const HeightField& f = s.height;
+  const double metres_per_px = 0.01 / f.px_per_cm;
+  const int w = f.width - 2 * kLitMargin, h = f.height - 2 * kLitMargin;
+  SceneDesc d;
+  d.file = "<lit rig>";
+  d.render.width = w;
+  d.render.height = h;
+  d.render.spp = rig.spp;
+  d.render.max_depth = rig.max_depth;
+  d.render.seed = rig.seed;
+  d.render.filter.type = FilterType::Box;  // every sample inside its pixel: the picture is not blurred
+  d.render.filter.radius = 0.5f;
+  const float half_height = float(0.5 * h * metres_per_px);
+  const float distance = half_height / std::tan(radians(kFovDeg) * 0.5f);
+  d.camera.position = Vec3f(0, 0, distance);
+  d.camera.look_at = Vec3f(0, 0, 0);
+  d.camera.up = Vec3f(0, 1, 0);
+  d.camera.fov_deg = kFovDeg;
+
+  const double e = rig.sun_elevation_deg * M_PI / 180.0;
+  LightDesc sun;
+  sun.type = LightType::Sun;
+  sun.direction = Vec3f(float(std::cos(e)), 0.0f, float(std::sin(e)));
+  sun.has_direction = true;
+  sun.irradiance = float(rig.sun_irradiance);
+  sun.angle_deg = 0.53f;
+  d.lights.push_back(sun);
+  if (rig.sky) {
+    LightDesc sky;
+    sky.type = LightType::Sky;
+    sky.direction = sun.direction;
+    sky.has_direction = true;
+    sky.sky_intensity = float(rig.sun_irradiance);
+    d.lights.push_back(sky);
+  }
+
+  MaterialDesc bark;
+  bark.name = "bark";
+  bark.type = MaterialType::Bark;
+  bark.base_color = Color::Constant(albedo_file.empty() ? kLitDefaultAlbedo : 1.0f);
+  if (!albedo_file.empty()) {
+    bark.base_color_texture.file = albedo_file;
+    bark.base_color_texture.srgb = false;
+  }
+  bark.roughness = 0.75f;
+  bark.specular = 0.3f;
+  d.materials.push_back(bark);
+
+  // The heights about their mean, so the patch's middle plane is the camera's plane of focus.
+  double mean = 0;
+  for (float z : f.z) mean += z;
+  mean /= double(f.z.size());
+  auto map = std::make_shared<DisplacementMap>();
+  map->width = f.width;
+  map->height = f.height;
+  map->value = f.z;
+  ObjectDesc patch;
+  patch.type = ObjectType::Patch;
+  patch.name = "bark";
+  patch.material = "bark";
+  patch.where = {d.file, "/objects/0"};
+  patch.point = Vec3f::Zero();
+  patch.normal = Vec3f(0, 0, 1);
+  patch.up = Vec3f(0, 1, 0);
+  patch.size = Vec2f(float(f.width * metres_per_px), float(f.height * metres_per_px));
+  patch.displacement.type = DisplacementDesc::Type::Image;
+  patch.displacement.map = map;
+  patch.displacement.scale = 1.0f;
+  patch.displacement.midlevel = float(mean);
+  patch.displacement.clamp = true;
+  d.objects.push_back(patch);
+  return d;
+}
+
+}  // namespace
+
+LitRender render_lit(const LitSubject& s, const LitRig& rig, const std::string& work_dir, int threads) {
+  const HeightField& f = s.height;
+  if (f.width < 8 + 2 * kLitMargin || f.height < 8 + 2 * kLitMargin || !(f.px_per_cm > 0))
+    throw UserError(s.label, "", "too small to light: " + std::to_string(f.width) + "×" + std::to_string(f.height) + " px");
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string albedo_file;
+  LiveTempFile live;
+  if (s.albedo) {
+    albedo_file = write_albedo(*s.albedo, work_dir);
+    live = LiveTempFile(albedo_file);
+  }
+  struct Remove {
+    std::string path;
+    ~Remove() {
+      std::error_code ec;
+      if (!path.empty()) std::filesystem::remove(path, ec);
+    }
+  } remove{albedo_file};
+  const SceneDesc d = rig_scene(s, rig, albedo_file);
+  const auto scene = build_render_scene(d, BarkResults{}, d.camera, d.render.width, d.render.height);
+  RenderSettings rs;
+  rs.spp = d.render.spp;
+  rs.max_depth = d.render.max_depth;
+  rs.seed = d.render.seed;
+  rs.filter = d.render.filter;
+  rs.threads = threads;
+  RenderResult r = render_image(*scene, Camera(d.camera, d.render.width, d.render.height), d.render.width, d.render.height, rs);
+
+  LitRender out;
+  out.triangles = scene->stats().triangles;
+  out.image.width = d.render.width;
+  out.image.height = d.render.height;
+  out.image.px_per_cm = f.px_per_cm;
+  out.image.rgb.resize(size_t(out.image.width) * size_t(out.image.height) * 3);
+  for (size_t p = 0; p < size_t(out.image.width) * size_t(out.image.height); ++p)
+    for (int c = 0; c < 3; ++c) out.image.rgb[p * 3 + size_t(c)] = r.film.beauty[p * 4 + size_t(c)];
+  out.film = std::move(r.film);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace phellem
