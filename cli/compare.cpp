@@ -30,6 +30,8 @@ constexpr double kMaxPxPerCm = 10000;
 
 struct CompareOptions {
   CompareSource a{"A", "", std::nullopt, ""}, b{"B", "", std::nullopt, ""};
+  RenderChoice render_a, render_b;  // --object, --facing-deg
+  RenderChoice& render(const CompareSource* s) { return s == &a ? render_a : render_b; }
   std::string html, json;
   std::optional<int> threads;
   std::string memory_limit;
@@ -80,6 +82,24 @@ double scale_value(const std::string& opt, const std::string& v) {
   return x;
 }
 
+// --object A=ID: a positive whole number.
+int object_value(const std::string& opt, const std::string& v) {
+  char* end = nullptr;
+  const long id = std::strtol(v.c_str(), &end, 10);
+  if (end == v.c_str() || *end != '\0' || id < 1 || id > (1L << 24))
+    bad(opt, "expected an object id (a whole number from 1, as the render's object_id layer counts), got \"" + printable(v) + "\"");
+  return int(id);
+}
+
+// --facing-deg A=DEG: (0, 180].
+double facing_value(const std::string& opt, const std::string& v) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (end == v.c_str() || *end != '\0' || !std::isfinite(x) || x <= 0 || x > 180)
+    bad(opt, "expected an angle in degrees in (0, 180] (180 keeps every pixel whatever way it faces), got \"" + printable(v) + "\"");
+  return x;
+}
+
 CompareOptions parse(const std::vector<std::string>& args) {
   CompareOptions o;
   std::vector<std::string> files;
@@ -89,7 +109,7 @@ CompareOptions parse(const std::vector<std::string>& args) {
     auto value = [&]() -> std::string {
       if (i + 1 >= args.size()) bad(a, "missing value");
       const std::string& v = args[i + 1];
-      const bool labelled = a == "--scale" || a == "--albedo" || a == "--relief";
+      const bool labelled = a == "--scale" || a == "--albedo" || a == "--object" || a == "--facing-deg" || a == "--relief";
       const std::string key = a == "--output" ? "-o" : labelled ? a + " " + v.substr(0, v.find('=')) : a;
       if (!given.insert(key).second) bad(key, "given twice; give each option once");
       if (args[i + 1].empty()) bad(a, "the value is empty");
@@ -101,6 +121,12 @@ CompareOptions parse(const std::vector<std::string>& args) {
     } else if (a == "--albedo") {
       auto [s, v] = labelled(o, a, value());
       s->albedo_path = v;
+    } else if (a == "--object") {
+      auto [s, v] = labelled(o, a, value());
+      o.render(s).object_id = object_value("--object " + s->label, v);
+    } else if (a == "--facing-deg") {
+      auto [s, v] = labelled(o, a, value());
+      o.render(s).facing_deg = facing_value("--facing-deg " + s->label, v);
     } else if (a == "--relief") {
       auto [s, v] = labelled(o, a, value());
       char* end = nullptr;
@@ -171,11 +197,14 @@ void print_summary(const CompareReport& r) {
 
 std::string compare_usage() {
   return "usage: phellem compare A B [--scale A=PX_PER_CM] [--scale B=PX_PER_CM] [--albedo A=FILE] [--albedo B=FILE]\n"
+         "                      [--object A=ID] [--facing-deg A=DEG] (and B=)\n"
          "                      [-o REPORT.html] [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
          "                      [--lit [--relief A=METRES] [--relief B=METRES] [--spp N] [--no-sky]]\n"
-         "  A and B: a height map (8/16-bit PNG, JPEG, TIFF, EXR; white = high), a FractureField EXR from\n"
-         "  `phellem simulate`, a render EXR (its displacement layer), or a patch.exr from `phellem fit`.\n"
-         "  --scale is required for plain images and renders; see docs/compare.md.\n"
+         "  A and B: a height map (8/16-bit PNG, JPEG, TIFF, EXR; white = high; not a colour photo: give that\n"
+         "  as --albedo), a FractureField EXR from `phellem simulate`, a render EXR (its displacement over the\n"
+         "  largest rectangle of one object's pixels facing the camera within --facing-deg, default 30; the\n"
+         "  object covering most pixels unless --object), or a patch.exr from `phellem fit`.\n"
+         "  --scale is required for plain images (a render's comes from its positions); see docs/compare.md.\n"
          "  --lit renders both as flat patches under one light rig (a raking 0.53° sun at 30°, a sky) and compares\n"
          "  the pictures (A: the reference, B: the candidate); --relief gives a plain image's height range in metres.\n";
 }
@@ -192,8 +221,8 @@ int run_compare(const std::vector<std::string>& args) {
   out.expect_input("B", o.b.path);
   if (!o.a.albedo_path.empty()) out.expect_input("--albedo A", o.a.albedo_path);
   if (!o.b.albedo_path.empty()) out.expect_input("--albedo B", o.b.albedo_path);
-  const LoadedInput a = load_input(o.a);
-  const LoadedInput b = load_input(o.b);
+  const LoadedInput a = load_input(o.a, o.render_a);
+  const LoadedInput b = load_input(o.b, o.render_b);
   check_compare_memory(a, b, o.memory_limit);
   if (o.lit.on) return run_compare_lit(a, b, o.lit, out, o.html, o.json, o.quiet, o.threads.value_or(0));
   const CompareReport report = compare_inputs(a, b);

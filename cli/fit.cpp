@@ -113,6 +113,8 @@ int run_fit(const cli::Options& o) {
   for (const std::string& f : {fitted, patch_path, (dir / "report.html").string(), (dir / "report.json").string()})
     out.expect_file("-o", f);
   HeightImage photo_image = read_height_image(o.scene);
+  // A render is fitted over the bark `compare` would measure (compare/render_pixels.h, defaults).
+  if (photo_image.render) photo_image = select_render_pixels(photo_image, {}, o.scene, "A", o.scale).image;
   const HeightField photo = photo_field(o, photo_image);
   check_fit_memory(memory_request(o, photo), o.memory_limit);
   // The photo as `phellem compare` reads it (with its albedo: a missing, unreadable or

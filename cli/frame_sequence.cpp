@@ -55,7 +55,7 @@ void render_frame(const cli::Options& o, const Loaded& l, const RenderScene& sce
   s.progress_label = "frame " + std::to_string(frame + 1) + "/" + std::to_string(frames);
   const RenderResult res = render_image(scene, camera, l.width, l.height, s);
   const std::string exr = frame_name(o.exr, frame);
-  out.write("-o", exr, [&](const std::string& tmp) { write_exr(res.film, tmp); });
+  out.write("-o", exr, [&](const std::string& tmp) { write_exr(res.film, tmp, exr_camera(camera)); });
   if (o.png_frames || !o.mp4.empty())
     out.write(png_frames_option(o), png_frame_name(exr),
               [&](const std::string& tmp) { write_png(res.film, tmp, o.view.empty() ? default_view() : o.view); });

@@ -61,7 +61,7 @@ int run_render(const cli::Options& o) {
   const Camera camera(l.desc.camera, l.width, l.height);
   RenderResult res = render_image(*scene, camera, l.width, l.height, l.settings);
   const std::string exr = render_exr_path(o);
-  if (!exr.empty()) out.write("-o", exr, [&](const std::string& tmp) { write_exr(res.film, tmp); });
+  if (!exr.empty()) out.write("-o", exr, [&](const std::string& tmp) { write_exr(res.film, tmp, exr_camera(camera)); });
   if (!o.png.empty())
     out.write("--png", o.png,
               [&](const std::string& tmp) { write_png(res.film, tmp, o.view.empty() ? default_view() : o.view); });

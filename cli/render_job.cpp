@@ -22,6 +22,8 @@ Loaded load(const cli::Options& o) {
   return l;
 }
 
+ExrCamera exr_camera(const Camera& camera) { return {camera.position(), camera.model().view()}; }
+
 void check_view(const cli::Options& o) {
   if (!o.view.empty()) require_view(o.view);
 }

@@ -3,6 +3,8 @@
 #pragma once
 
 #include "cli/options.h"
+#include "io/image_output.h"
+#include "renderer/camera.h"
 #include "renderer/integrator.h"
 #include "scene/scene_desc.h"
 
@@ -19,5 +21,7 @@ struct Loaded {
 Loaded load(const cli::Options& o);
 // An unknown --view is a UserError before any work starts.
 void check_view(const cli::Options& o);
+// The camera as a render's EXR header states it (for `compare`, which pixels face it).
+ExrCamera exr_camera(const Camera& camera);
 
 }  // namespace phellem

@@ -5,6 +5,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "compare/common_scale.h"
+#include "io/image_chroma.h"
 #include "util/errors.h"
 
 namespace phellem {
@@ -25,17 +26,38 @@ const char* kind_name(HeightImage::Kind k) {
 
 }  // namespace
 
-LoadedInput load_input(const CompareSource& source) { return load_input(source, read_height_image(source.path)); }
+LoadedInput load_input(const CompareSource& source, const RenderChoice& render) {
+  return load_input(source, read_height_image(source.path), render);
+}
 
-LoadedInput load_input(const CompareSource& source, HeightImage image) {
+LoadedInput load_input(const CompareSource& source, HeightImage image, const RenderChoice& render) {
   LoadedInput in;
   in.source = source;
-  in.image = std::move(image);
+  if (image.kind == HeightImage::Kind::plain && image.chroma > kColourPhotoChroma) {
+    char measured[96];
+    std::snprintf(measured, sizeof measured, "chroma %.3f, over the %.2f that grey height maps stay under", image.chroma,
+                  kColourPhotoChroma);
+    throw UserError(source.path, "",
+                    std::string("is a colour photograph (") + measured +
+                        "), not a height map: compare measures relief, white = high. Give the bark's height map "
+                        "(a displacement scan) as input " + source.label + ", and this photo as its colour with --albedo " +
+                        source.label + "=" + source.path + " (there is no --height option: the height map is the input itself)");
+  }
+  std::optional<SelectedRender> selected;
+  if (image.render) {
+    selected = select_render_pixels(image, render, source.path, source.label, source.px_per_cm);
+    in.image = std::move(selected->image);
+    in.render = selected->selection;
+  } else {
+    in.image = std::move(image);
+  }
   if (source.px_per_cm) {
     in.px_per_cm_x = in.px_per_cm_y = *source.px_per_cm;
+    in.scale_origin = ScaleOrigin::option;
   } else if (in.image.px_per_cm_x > 0 && in.image.px_per_cm_y > 0) {
     in.px_per_cm_x = in.image.px_per_cm_x;
     in.px_per_cm_y = in.image.px_per_cm_y;
+    in.scale_origin = in.render ? ScaleOrigin::render_positions : ScaleOrigin::header;
   } else {
     throw UserError(source.path, "--scale " + source.label,
                     std::string("is ") + kind_name(in.image.kind) + ", which states no physical scale: give --scale " +
@@ -43,10 +65,26 @@ LoadedInput load_input(const CompareSource& source, HeightImage image) {
   }
   if (!source.albedo_path.empty()) {
     in.albedo = read_albedo_image(source.albedo_path);
-    if (in.albedo->width != in.image.width || in.albedo->height != in.image.height)
+    // A render's albedo covers the whole render, and is cropped as its heights are.
+    const int w = in.render ? in.render->render_width : in.image.width, h = in.render ? in.render->render_height : in.image.height;
+    if (in.albedo->width != w || in.albedo->height != h)
       throw UserError(source.albedo_path, "--albedo " + source.label,
                       "the albedo is " + size_text(in.albedo->width, in.albedo->height) + " pixels but its height map " +
-                          source.path + " is " + size_text(in.image.width, in.image.height) + ": they must cover the same pixels");
+                          source.path + " is " + size_text(w, h) + ": they must cover the same pixels");
+    if (in.render) {
+      const PixelRect& q = in.render->rect;
+      std::vector<float> crop;
+      crop.reserve(size_t(q.area()) * 3);
+      for (int y = q.y; y < q.y + q.height; ++y)
+        for (int x = q.x; x < q.x + q.width; ++x)
+          for (int c = 0; c < 3; ++c) crop.push_back(in.albedo->rgb[3 * (size_t(y) * size_t(w) + size_t(x)) + size_t(c)]);
+      in.albedo->rgb = std::move(crop);
+      in.albedo->width = q.width;
+      in.albedo->height = q.height;
+    }
+  } else if (selected && selected->albedo) {
+    in.albedo = std::move(selected->albedo);
+    in.albedo_from_render = true;
   }
   return in;
 }
@@ -60,6 +98,9 @@ PreparedInput at_scale(const LoadedInput& input, double px_per_cm) {
   p.source = input.source;
   p.source_px_per_cm_x = input.px_per_cm_x;
   p.source_px_per_cm_y = input.px_per_cm_y;
+  p.scale_origin = input.scale_origin;
+  p.albedo_from_render = input.albedo_from_render;
+  p.render = input.render;
   HeightField own;
   own.width = input.image.width;
   own.height = input.image.height;

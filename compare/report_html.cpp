@@ -160,14 +160,57 @@ std::string statistics_table(const CompareReport& r) {
   return s.str();
 }
 
+const char* origin_text(ScaleOrigin o) {
+  switch (o) {
+    case ScaleOrigin::option: return "given by --scale";
+    case ScaleOrigin::header: return "stated by the file";
+    case ScaleOrigin::render_positions:
+      return "from the position layer: the median distance between adjacent pixels of the rectangle";
+  }
+  return "";
+}
+
+// Which pixels of a render were measured, and why.
+std::string render_caption(const PreparedInput& in) {
+  const RenderSelection& r = *in.render;
+  std::ostringstream s;
+  s << "<br>render " << r.render_width << "×" << r.render_height << " px; measured: the rectangle x " << r.rect.x << ", y "
+    << r.rect.y << ", " << r.rect.width << "×" << r.rect.height << " px, the largest of the " << r.mask_pixels
+    << " pixels fully covered by object " << r.object_id << " (" << (r.object_chosen ? "--object" : "the object covering most pixels")
+    << ", " << r.object_pixels << " px)";
+  if (r.facing_deg < 180) s << " whose surface faces the camera within " << fixed(r.facing_deg, 0) << "°";
+  s << "; position layer " << fixed(r.position_px_per_cm_x, 2);
+  if (r.position_px_per_cm_y != r.position_px_per_cm_x) s << "×" << fixed(r.position_px_per_cm_y, 2);
+  s << " px/cm";
+  if (in.albedo_from_render) s << "; albedo from its albedo layer";
+  return s.str();
+}
+
 std::string input_caption(const PreparedInput& in) {
   std::ostringstream s;
   s << "<b>" << escape(in.source.label) << "</b>: " << escape(in.source.path) << "<br>" << in.field.width << "×"
     << in.field.height << " px = " << fixed(in.field.width / in.field.px_per_cm, 1) << "×"
     << fixed(in.field.height / in.field.px_per_cm, 1) << " cm (source " << fixed(in.source_px_per_cm_x, 2);
   if (in.source_px_per_cm_y != in.source_px_per_cm_x) s << "×" << fixed(in.source_px_per_cm_y, 2);
-  s << " px/cm)";
+  s << " px/cm, " << origin_text(in.scale_origin) << ")";
+  if (in.render) s << render_caption(in);
   return s.str();
+}
+
+// The two pictures of a pair drawn to scale: each figure's width is its share of the two
+// physical widths (the gap aside), so centimetres are as long on both sides; the heights
+// follow from the pictures' aspect.
+std::string scaled_figure_open(const PreparedInput& in, const PreparedInput& a, const PreparedInput& b) {
+  const double wa = a.field.width / a.field.px_per_cm, wb = b.field.width / b.field.px_per_cm;
+  const double w = in.field.width / in.field.px_per_cm;
+  char style[160];
+  std::snprintf(style, sizeof style, "flex:0 0 calc((100%% - 16px) * %.6f)", w / (wa + wb));
+  return "<figure class=\"to-scale\" data-width-cm=\"" + fixed(w, 3) + "\" style=\"" + style + "\">";
+}
+
+std::string size_cm(const PreparedInput& in) {
+  return fixed(in.field.width / in.field.px_per_cm, 1) + " cm wide × " + fixed(in.field.height / in.field.px_per_cm, 1) +
+         " cm high";
 }
 
 }  // namespace
@@ -199,24 +242,27 @@ std::string report_html(const CompareReport& r) {
     << escape(r.a.source.path) << "<span style=\"background:" << kColourB << "\"></span>" << escape(r.b.source.label) << ": "
     << escape(r.b.source.path) << "</p>";
 
-  s << "<h2>Heights at the common scale</h2><div class=\"pair\">";
+  s << "<h2>Heights at the common scale</h2><p class=\"note\">Drawn to scale: a centimetre is as long in both.</p>"
+       "<div class=\"pair\">";
   for (const PreparedInput* in : {&r.a, &r.b})
-    s << "<figure>" << img(height_png(in->field), in->source.label + " height") << "<figcaption>" << input_caption(*in)
-      << "</figcaption></figure>";
+    s << scaled_figure_open(*in, r.a, r.b) << img(height_png(in->field), in->source.label + " height") << "<figcaption>"
+      << size_cm(*in) << "<br>" << input_caption(*in) << "</figcaption></figure>";
   s << "</div><h2>Fissure masks</h2><div class=\"pair\">";
   const FissureAnalysis* an[2] = {&r.analysis_a, &r.analysis_b};
   const PreparedInput* ins[2] = {&r.a, &r.b};
   for (int i = 0; i < 2; ++i)
-    s << "<figure>" << img(mask_overlay_png(an[i]->field, an[i]->mask), ins[i]->source.label + " fissure mask")
-      << "<figcaption>" << escape(ins[i]->source.label) << ": fissures tinted (" << fixed(100 * an[i]->stats.fissure_fraction, 1)
-      << " % of the area)</figcaption></figure>";
+    s << scaled_figure_open(*ins[i], r.a, r.b) << img(mask_overlay_png(an[i]->field, an[i]->mask), ins[i]->source.label + " fissure mask")
+      << "<figcaption>" << size_cm(*ins[i]) << "<br>" << escape(ins[i]->source.label) << ": fissures tinted ("
+      << fixed(100 * an[i]->stats.fissure_fraction, 1) << " % of the area)</figcaption></figure>";
   s << "</div>";
   if (r.a.albedo || r.b.albedo) {
     s << "<h2>Albedo</h2><div class=\"pair\">";
     for (const PreparedInput* in : ins)
       if (in->albedo)
         s << "<figure>" << img(albedo_png(*in->albedo), in->source.label + " albedo") << "<figcaption>"
-          << escape(in->source.label) << ": " << escape(in->source.albedo_path) << "</figcaption></figure>";
+          << escape(in->source.label) << ": "
+          << (in->albedo_from_render ? "the albedo layer of " + escape(in->source.path) : escape(in->source.albedo_path))
+          << "</figcaption></figure>";
     s << "</div>";
   }
   s << "<h2>Orientation, spacing and width</h2><div class=\"charts\"><figure>" << rose(r.analysis_a.stats, r.analysis_b.stats)

@@ -6,11 +6,35 @@ namespace phellem {
 
 namespace {
 
+const char* origin_name(ScaleOrigin o) {
+  switch (o) {
+    case ScaleOrigin::option: return "--scale";
+    case ScaleOrigin::header: return "header";
+    case ScaleOrigin::render_positions: return "position layer";
+  }
+  return "";
+}
+
+// Which pixels of a render were measured.
+nlohmann::json render_json(const RenderSelection& r) {
+  return {{"render_size_px", {r.render_width, r.render_height}},
+          {"rect", {{"x", r.rect.x}, {"y", r.rect.y}, {"w", r.rect.width}, {"h", r.rect.height}}},
+          {"object_id", r.object_id},
+          {"object_from", r.object_chosen ? "--object" : "most pixels"},
+          {"object_pixels", r.object_pixels},
+          {"mask_pixels", r.mask_pixels},
+          {"facing_deg", r.facing_deg},
+          {"position_px_per_cm", {r.position_px_per_cm_x, r.position_px_per_cm_y}}};
+}
+
 nlohmann::json input_json(const PreparedInput& in, const FissureAnalysis& an) {
   nlohmann::json j;
   j["file"] = in.source.path;
   if (!in.source.albedo_path.empty()) j["albedo"] = in.source.albedo_path;
+  else if (in.albedo_from_render) j["albedo"] = "albedo layer";
   j["source_px_per_cm"] = {in.source_px_per_cm_x, in.source_px_per_cm_y};
+  j["source_px_per_cm_from"] = origin_name(in.scale_origin);
+  if (in.render) j["render"] = render_json(*in.render);
   j["size_px"] = {in.field.width, in.field.height};
   j["size_cm"] = {in.field.width / in.field.px_per_cm, in.field.height / in.field.px_per_cm};
   nlohmann::json stats = nlohmann::json::object();

@@ -2,11 +2,16 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <Eigen/LU>
+
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <tuple>
 
+#include "io/image_chroma.h"
 #include "io/image_decode.h"
 #include "io/image_limits.h"
 #include "io/image_output.h"
@@ -102,23 +107,58 @@ std::vector<float> channel_or_fail(OpenImage& im, const char* name, const std::s
   return read_channels(im, c, c + 1, name);
 }
 
-// Render EXR: the displacement AOV, where every pixel must show an object.
+// The camera position a render's header states: phellem:camera_position, else the
+// translation of the inverse of the standard worldToCamera matrix (Imath: row vectors, so the
+// camera centre c satisfies c·M = 0).
+std::optional<Eigen::Vector3d> camera_position(const OpenImage& im) {
+  if (const OIIO::ParamValue* p = im.spec.find_attribute(kCameraPositionAttribute, OIIO::TypeDesc::TypeVector)) {
+    const float* v = static_cast<const float*>(p->data());
+    const Eigen::Vector3d c(v[0], v[1], v[2]);
+    if (!c.allFinite()) im.fail(kCameraPositionAttribute, "must be three finite numbers");
+    return c;
+  }
+  if (const OIIO::ParamValue* p = im.spec.find_attribute(kWorldToCameraAttribute, OIIO::TypeDesc::TypeMatrix44)) {
+    Eigen::Matrix4d m;
+    const float* v = static_cast<const float*>(p->data());
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) m(r, c) = v[4 * r + c];
+    const Eigen::Matrix4d inv = m.inverse();
+    if (!inv.allFinite()) im.fail(kWorldToCameraAttribute, "is not an invertible matrix");
+    return Eigen::Vector3d(inv(3, 0), inv(3, 1), inv(3, 2)) / inv(3, 3);
+  }
+  return std::nullopt;
+}
+
+// Three named channels, interleaved.
+std::vector<float> vector_channels(OpenImage& im, const char* const names[3], const std::string& layer) {
+  const int c = im.channel(names[0]);
+  if (c < 0 || im.channel(names[1]) != c + 1 || im.channel(names[2]) != c + 2)
+    im.fail(layer, "missing: a render EXR has the " + layer + " layer (" + names[0] + ", " + names[1] + ", " + names[2] +
+                       "); render it again");
+  return read_channels(im, c, c + 3, layer);
+}
+
+// Render EXR: the displacement AOV and the layers that say which pixels show bark.
 void read_render(OpenImage& im, HeightImage& h) {
   h.kind = HeightImage::Kind::render;
   if (im.channel(kRenderDisplacementChannel) < 0)
     im.fail(kRenderDisplacementChannel,
             "missing: this render has no displacement layer (rendered before it existed?); render it again");
-  const std::vector<float> id = channel_or_fail(im, kRenderObjectIdChannel, "render");
-  size_t background = 0, first = 0;
-  for (size_t p = 0; p < id.size(); ++p)
-    if (id[p] == 0 && background++ == 0) first = p;
-  if (background > 0) {
-    const int x = int(first % size_t(h.width)), y = int(first / size_t(h.width));
-    im.fail(kRenderObjectIdChannel, std::to_string(background) + " of " + std::to_string(id.size()) +
-                                        " pixels show no object (object_id 0), the first at (" + std::to_string(x) + ", " +
-                                        std::to_string(y) + "): crop the render to the bark");
-  }
+  RenderLayers r;
+  r.object_id = channel_or_fail(im, kRenderObjectIdChannel, "render");
+  r.alpha = channel_or_fail(im, kRenderAlphaChannel, "render");
+  r.normal = vector_channels(im, kRenderNormalChannels, "normal");
+  r.position = vector_channels(im, kRenderPositionChannels, "position");
+  if (im.channel(kRenderAlbedoChannels[0]) >= 0) r.albedo = vector_channels(im, kRenderAlbedoChannels, "albedo");
+  for (const auto& [layer, v, n] : {std::tuple<const char*, const std::vector<float>*, int>{kRenderObjectIdChannel, &r.object_id, 1},
+                                    {kRenderAlphaChannel, &r.alpha, 1},
+                                    {"normal", &r.normal, 3},
+                                    {"position", &r.position, 3},
+                                    {"albedo", &r.albedo, 3}})
+    require_finite(im, *v, n, layer);
+  r.camera = camera_position(im);
   h.z = channel_or_fail(im, kRenderDisplacementChannel, "render");
+  h.render = std::move(r);
 }
 
 // FractureField EXR: height = −depth; the field spans the circumference across and the
@@ -146,6 +186,7 @@ void read_plain(OpenImage& im, HeightImage& h) {
     h.z = v;
     return;
   }
+  h.chroma = colour_chroma(v.data(), h.width, h.height, 3);
   h.z.resize(im.pixels());
   for (size_t p = 0; p < h.z.size(); ++p) h.z[p] = (v[3 * p] + v[3 * p + 1] + v[3 * p + 2]) / 3.0f;
 }

@@ -32,13 +32,21 @@ std::vector<std::string> exr_channel_names() {
           "position.Y", "position.Z", "object_id.id", "crack.mask", "crack.depth", "displacement.D"};
 }
 
-void write_exr(const Film& f, const std::string& path) {
+void write_exr(const Film& f, const std::string& path, const std::optional<ExrCamera>& camera) {
   const auto names = exr_channel_names();
   const int nc = int(names.size());
   OIIO::ImageSpec spec(f.width, f.height, nc, OIIO::TypeDesc::HALF);
   spec.channelnames = names;
   spec.channelformats.assign(nc, OIIO::TypeDesc::HALF);
   spec.channelformats[14] = OIIO::TypeDesc::FLOAT;  // ids stay exact
+  // Positions in metres: half's 2^-11 relative step is half a millimetre at a metre, more than
+  // a pixel of bark; compare measures the scale from neighbouring positions.
+  for (int c = 11; c < 14; ++c) spec.channelformats[size_t(c)] = OIIO::TypeDesc::FLOAT;
+  if (camera) {
+    spec.attribute("phellem:camera_position", OIIO::TypeDesc::TypeVector, camera->position.data());
+    const Eigen::Matrix4f row_major = camera->world_to_camera;  // Eigen is column-major: its storage is Mᵀ row by row
+    spec.attribute("worldToCamera", OIIO::TypeDesc::TypeMatrix44, row_major.data());
+  }
   spec.alpha_channel = 3;
   spec.z_channel = 10;
   spec.attribute("compression", "zip");

@@ -3,6 +3,8 @@
 // temporary file in the same folder, renamed over the target only when complete.
 #pragma once
 
+#include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,11 +13,19 @@
 namespace phellem {
 
 // Channel layout of the EXR (layer.channel): beauty.{R,G,B,A}, albedo.{R,G,B},
-// normal.{X,Y,Z}, depth.Z, position.{X,Y,Z}, object_id.id (32-bit float), crack.{mask,depth},
-// displacement.D.
+// normal.{X,Y,Z}, depth.Z, position.{X,Y,Z} (32-bit float), object_id.id (32-bit float),
+// crack.{mask,depth}, displacement.D; the rest half.
 std::vector<std::string> exr_channel_names();
 
-void write_exr(const Film& film, const std::string& path);
+// The camera a render was seen from, stated in its EXR header so that `compare` can tell which
+// pixels face it: `phellem:camera_position` (world, metres) and the standard OpenEXR
+// `worldToCamera` (Imath convention: row vectors, p_camera = p_world · M).
+struct ExrCamera {
+  Eigen::Vector3f position;
+  Eigen::Matrix4f world_to_camera;  // column vectors (OpenGL's view matrix); transposed on write
+};
+
+void write_exr(const Film& film, const std::string& path, const std::optional<ExrCamera>& camera = std::nullopt);
 // view: one of ocio_views(); display "sRGB".
 void write_png(const Film& film, const std::string& path, const std::string& view);
 std::vector<std::string> ocio_views();

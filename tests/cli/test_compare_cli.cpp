@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "tests/support/height_fields.h"
+#include "tests/support/synthetic_render.h"
 #include "tests/support/test_util.h"
 
 namespace phellem {
@@ -167,6 +170,128 @@ TEST(CompareCli, AFailedRunLeavesTheEarlierReportUntouched) {
   EXPECT_EQ(test::read_text(report), "earlier report");
   EXPECT_EQ(test::read_text(json), "{}");
   EXPECT_TRUE(test::leftover_temporaries(in.dir).empty());
+}
+
+// A render of `bark` (heights in its displacement layer, 1 mm apart in position: 10 px/cm) in a
+// frame `margin` px wide of background, with a second object's strip on the right and a
+// camera 2 m in front.
+std::string write_render(const std::string& path, const test::Heights& bark, int margin) {
+  test::SyntheticRender r(bark.width + 2 * margin + 20, bark.height + 2 * margin);
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      const size_t p = r.at(x, y);
+      const int bx = x - margin, by = y - margin;
+      const bool on_bark = bx >= 0 && by >= 0 && bx < bark.width && by < bark.height;
+      const bool other = x >= r.width - 15;
+      r.alpha[p] = on_bark || other ? 1.0f : 0.0f;
+      r.object_id[p] = on_bark ? 1.0f : other ? 2.0f : 0.0f;
+      r.set_position(x, y, 0.001f * float(x), -0.001f * float(y), 0);
+      if (on_bark) r.displacement[p] = 0.01f * bark.z[size_t(by) * size_t(bark.width) + size_t(bx)];
+    }
+  r.camera_position = std::array<float, 3>{0.001f * float(r.width) / 2, -0.001f * float(r.height) / 2, 2.0f};
+  test::write_synthetic_render(path, r);
+  return path;
+}
+
+// A render with background is measured over its bark: the JSON says which pixels and scale.
+TEST(CompareCli, ARenderIsMeasuredOverItsLargestRectangleOfBark) {
+  const auto& in = inputs();
+  const auto bark = test::fissured_bark(25, 22, 10, 5);  // 250×220 px
+  const std::string exr = write_render(in.dir + "/render.exr", bark, 12);
+  test::write_height_png16(in.dir + "/render_bark.png", bark);
+  const auto j = run_json(exr + " " + in.dir + "/render_bark.png --scale B=10", "render");
+  ASSERT_TRUE(j.is_object());
+  const auto& a = j["inputs"]["A"];
+  EXPECT_EQ(a["render"]["rect"], nlohmann::json({{"x", 12}, {"y", 12}, {"w", 250}, {"h", 220}})) << a.dump();
+  EXPECT_EQ(a["render"]["object_id"], 1);
+  EXPECT_EQ(a["render"]["object_from"], "most pixels");
+  EXPECT_EQ(a["render"]["mask_pixels"], 250 * 220);
+  EXPECT_EQ(a["render"]["facing_deg"], 30.0);
+  EXPECT_EQ(a["source_px_per_cm_from"], "position layer");
+  EXPECT_NEAR(a["source_px_per_cm"][0].get<double>(), 10.0, 1e-3);
+  EXPECT_NEAR(a["source_px_per_cm"][1].get<double>(), 10.0, 1e-3);
+  EXPECT_EQ(a["albedo"], "albedo layer");
+  EXPECT_EQ(a["size_px"], nlohmann::json({250, 220}));
+  EXPECT_LE(j["score"].get<double>(), 0.02);  // the same heights
+  EXPECT_EQ(j["inputs"]["B"]["source_px_per_cm_from"], "--scale");
+  // The HTML says it too.
+  const std::string html = in.dir + "/render.html";
+  const auto r = test::run_phellem("compare " + exr + " " + in.dir + "/render_bark.png --scale B=10 -o " + html + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string page = test::read_text(html);
+  EXPECT_NE(page.find("measured: the rectangle x 12, y 12, 250×220 px, the largest of the 55000 pixels fully covered by object 1"),
+            std::string::npos);
+  EXPECT_NE(page.find("from the position layer"), std::string::npos);
+  // The other object, chosen: 15 px wide, refused naming the rectangle and what to do.
+  const auto other = test::run_phellem("compare " + exr + " " + in.dir + "/render_bark.png --scale B=10 --object A=2");
+  EXPECT_EQ(other.exit_code, 2) << other.output;
+  EXPECT_EQ(other.output.rfind("phellem: error: " + exr + ": render: the largest rectangle of bark pixels (fully covered by "
+                               "object 2, facing the camera within 30°) is 15×244 px at (279, 0)", 0),
+            0u)
+      << other.output;
+  EXPECT_NE(other.output.find("compare needs at least 128 px and 20 cm on each side"), std::string::npos) << other.output;
+}
+
+TEST(CompareCli, RenderOptionMistakes) {
+  const auto& in = inputs();
+  const std::string ab = in.a + " " + in.b + " --scale A=10 --scale B=5 ";
+  const std::vector<BadCase> cases = {
+      {"object zero", ab + "--object A=0", "--object A: expected an object id"},
+      {"object text", ab + "--object B=bark", "--object B: expected an object id"},
+      {"facing zero", ab + "--facing-deg A=0", "--facing-deg A: expected an angle in degrees in (0, 180]"},
+      {"facing over", ab + "--facing-deg A=181", "in (0, 180]"},
+      {"facing twice", ab + "--facing-deg A=20 --facing-deg A=30", "--facing-deg A: given twice"},
+  };
+  for (const BadCase& c : cases) {
+    const auto r = test::run_phellem("compare " + c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.name << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.name << ": wanted \"" << c.expect << "\"\n" << r.output;
+  }
+}
+
+// The Poly Haven photos in ../shared/reference (outside the repository: skipped where absent):
+// the colour photos are refused as height maps, naming --albedo; their scans are measured.
+TEST(CompareCli, AColourPhotoIsNoHeightMap) {
+  const std::string photos = std::string(PHELLEM_SOURCE_DIR) + "/../shared/reference/photos";
+  if (!std::ifstream(photos + "/pine_bark_polyhaven.jpg")) GTEST_SKIP() << "no reference photos in " << photos;
+  const std::string brown = photos + "/bark_brown_01_polyhaven", pine = photos + "/pine_bark_polyhaven";
+  for (const std::string& photo : {brown + ".jpg", pine + ".jpg"}) {
+    const auto r = test::run_phellem("compare " + photo + " " + brown + "_disp.jpg --scale A=10 --scale B=10");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output.rfind("phellem: error: " + photo + ": is a colour photograph (chroma 0.", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find("--albedo A=" + photo), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("no --height option"), std::string::npos) << r.output;
+  }
+  const auto ok = test::run_phellem("compare " + brown + "_disp.jpg " + pine + "_disp.png --scale A=10 --scale B=10 --albedo A=" +
+                                    brown + ".jpg --quiet");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
+// The common-scale panels are drawn to scale: each figure's share of the row is its share of
+// the two physical widths, and the sizes in cm are written under them.
+TEST(CompareCli, CommonScalePanelsAreDrawnToScale) {
+  const auto& in = inputs();
+  const std::string narrow = in.dir + "/narrow.png";
+  test::write_height_png16(narrow, test::fissured_bark(21, 40, 10, 6));  // 21 cm against A's 60
+  const std::string html = in.dir + "/scaled.html";
+  const auto r = test::run_phellem("compare " + in.a + " " + narrow + " --scale A=10 --scale B=10 -o " + html + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string page = test::read_text(html);
+  const std::regex fig("<figure class=\"to-scale\" data-width-cm=\"([0-9.]+)\" style=\"flex:0 0 calc\\(\\(100% - 16px\\) \\* ([0-9.]+)\\)\">");
+  std::vector<double> cm, share;
+  for (auto it = std::sregex_iterator(page.begin(), page.end(), fig); it != std::sregex_iterator(); ++it) {
+    cm.push_back(std::stod((*it)[1]));
+    share.push_back(std::stod((*it)[2]));
+  }
+  ASSERT_EQ(cm.size(), 4u) << "heights and masks, A and B";
+  for (size_t i = 0; i < 4; i += 2) {
+    EXPECT_NEAR(cm[i], 60.0, 0.1);
+    EXPECT_NEAR(cm[i + 1], 21.0, 0.1);
+    EXPECT_NEAR(share[i] / share[i + 1], cm[i] / cm[i + 1], 1e-4);
+    EXPECT_NEAR(share[i] + share[i + 1], 1.0, 1e-5);
+  }
+  EXPECT_NE(page.find("60.0 cm wide × 60.0 cm high"), std::string::npos);
+  EXPECT_NE(page.find("21.0 cm wide × 40.0 cm high"), std::string::npos);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // patch.exr) and every way a file can be refused. Files are written here, in a temp folder.
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "io/film.h"
 #include "io/height_image.h"
 #include "io/image_output.h"
+#include "renderer/camera.h"
 #include "tests/support/test_util.h"
 #include "util/errors.h"
 
@@ -174,18 +176,54 @@ TEST(HeightImage, RenderGivesTheDisplacementLayer) {
   ASSERT_EQ(r.z.size(), f.displacement.size());
   for (size_t p = 0; p < r.z.size(); ++p) EXPECT_NEAR(r.z[p], f.displacement[p], 4e-6f) << p;  // half: 2^-11 relative
 
+  // A render with background is read whole, its layers with it (before issue 44 it was
+  // refused here; compare/render_pixels.h now chooses the bark pixels).
   Film bg = displaced_film(5, 4);
   bg.object_id[2 * 5 + 3] = 0;  // (3, 2)
   bg.object_id[3 * 5 + 4] = 0;
+  for (int p = 0; p < 20; ++p) {
+    bg.beauty[size_t(p) * 4 + 3] = p == 2 * 5 + 3 || p == 3 * 5 + 4 ? 0.0f : 1.0f;
+    bg.position[size_t(p) * 3] = 1.0f + 0x1p-14f * float(p);  // float in the file: exact
+    bg.normal[size_t(p) * 3 + 2] = 1.0f;
+    bg.albedo[size_t(p) * 3 + 1] = 0.25f;
+  }
   write_exr(bg, dir() + "/render_bg.exr");
-  expect_user_error([] { read_height_image(dir() + "/render_bg.exr"); }, "background", dir() + "/render_bg.exr",
-                    kRenderObjectIdChannel,
-                    "2 of 20 pixels show no object (object_id 0), the first at (3, 2): crop the render to the bark");
+  const HeightImage b = read_height_image(dir() + "/render_bg.exr");
+  ASSERT_TRUE(b.render);
+  EXPECT_EQ(b.render->object_id[2 * 5 + 3], 0.0f);
+  EXPECT_EQ(b.render->object_id[0], 1.0f);
+  EXPECT_EQ(b.render->alpha[3 * 5 + 4], 0.0f);
+  EXPECT_EQ(b.render->alpha[0], 1.0f);
+  for (int p = 0; p < 20; ++p) EXPECT_EQ(b.render->position[size_t(p) * 3], 1.0f + 0x1p-14f * float(p)) << p;
+  EXPECT_EQ(b.render->normal[2], 1.0f);
+  EXPECT_EQ(b.render->albedo[1], 0.25f);
+  EXPECT_FALSE(b.render->camera);  // written without one
   // A render from before the displacement layer: refused, not read as a plain image.
   const std::vector<float> old(5 * 4 * 2, 1.0f);
   write_image(dir() + "/render_old.exr", 5, 4, {"beauty.R", kRenderObjectIdChannel}, OIIO::TypeDesc::FLOAT, old.data());
   expect_user_error([] { read_height_image(dir() + "/render_old.exr"); }, "old render", dir() + "/render_old.exr",
                     kRenderDisplacementChannel, "render it again");
+}
+
+// write_exr states the camera twice: phellem:camera_position, and the standard worldToCamera
+// (from which a render whose phellem attribute was lost still gives it).
+TEST(HeightImage, RenderStatesItsCamera) {
+  const Film f = displaced_film(5, 4);
+  CameraDesc desc;
+  desc.position = Vec3f(0.3f, 1.7f, 2.2f);
+  desc.look_at = Vec3f(0, 1.2f, 0);
+  const Camera camera(desc, 5, 4);
+  write_exr(f, dir() + "/render_camera.exr", ExrCamera{camera.position(), camera.model().view()});
+  const HeightImage r = read_height_image(dir() + "/render_camera.exr");
+  ASSERT_TRUE(r.render && r.render->camera);
+  EXPECT_EQ(*r.render->camera, Eigen::Vector3d(0.3f, 1.7f, 2.2f));
+  OIIO::ImageBuf buf(dir() + "/render_camera.exr");
+  ASSERT_TRUE(buf.read()) << buf.geterror();
+  buf.specmod().erase_attribute(kCameraPositionAttribute);
+  ASSERT_TRUE(buf.write(dir() + "/render_matrix.exr")) << buf.geterror();
+  const HeightImage m = read_height_image(dir() + "/render_matrix.exr");
+  ASSERT_TRUE(m.render && m.render->camera);
+  EXPECT_NEAR((*m.render->camera - Eigen::Vector3d(0.3, 1.7, 2.2)).norm(), 0, 1e-5);
 }
 
 TEST(HeightImage, BadFilesAreUserErrors) {

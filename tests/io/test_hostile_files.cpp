@@ -26,10 +26,13 @@ namespace {
 namespace fs = std::filesystem;
 
 // A size × size RGB image of noise (so that it compresses badly) in whatever format `path` names.
-std::string noise_image(const std::string& path, int size = 64) {
+// grey: R = G = B (a height map saved in colour; random colours are a colour photo to `compare`).
+std::string noise_image(const std::string& path, int size = 64, bool grey = false) {
   std::vector<unsigned char> px(size_t(size) * size_t(size) * 3);
   uint32_t x = 12345;
   for (auto& p : px) p = static_cast<unsigned char>((x = x * 1664525u + 1013904223u) >> 24);
+  if (grey)
+    for (size_t i = 0; i < px.size(); i += 3) px[i + 1] = px[i + 2] = px[i];
   auto out = OIIO::ImageOutput::create(path);
   EXPECT_TRUE(out && out->open(path, OIIO::ImageSpec(size, size, 3, OIIO::TypeDesc::UINT8)) &&
               out->write_image(OIIO::TypeDesc::UINT8, px.data()) && out->close())
@@ -39,8 +42,8 @@ std::string noise_image(const std::string& path, int size = 64) {
 
 // A valid JPEG (whole.jpg) and its first half (cut.jpg): the header reads, half the scan data
 // is missing.
-std::string truncated_jpeg(const std::string& dir, int size = 64) {
-  const std::string bytes = test::read_text(noise_image(dir + "/whole.jpg", size));
+std::string truncated_jpeg(const std::string& dir, int size = 64, bool grey = false) {
+  const std::string bytes = test::read_text(noise_image(dir + "/whole.jpg", size, grey));
   const std::string cut = dir + "/cut.jpg";
   test::write_text(cut, bytes.substr(0, bytes.size() / 2));
   return cut;
@@ -164,10 +167,11 @@ TEST(TruncatedJpeg, IsRefusedAsAHeightMapAndAsAPhoto) {
   EXPECT_NO_THROW(read_height_image(dir + "/whole.jpg"));
 }
 
-// 512 px at 10 px/cm: large enough for both commands, which take the whole image.
+// 512 px at 10 px/cm: large enough for both commands, which take the whole image. Grey noise:
+// random colours are refused by `compare` as a colour photo (issue 44), whole or not.
 TEST(TruncatedJpeg, CompareAndFitExitTwo) {
   const std::string dir = test::temp_dir("jpeg_cut_cli");
-  const std::string cut = truncated_jpeg(dir, 512), whole = dir + "/whole.jpg";
+  const std::string cut = truncated_jpeg(dir, 512, true), whole = dir + "/whole.jpg";
   const std::string says = "cannot decode the pixels: the file is damaged or cut short (JPEG error: Premature end of JPEG file";
   const std::string scales = " --scale A=10 --scale B=10";
   expect_refused(test::run_phellem_limited("compare " + cut + " " + whole + scales, 4096, 120), cut + ": pixels: ", says);
