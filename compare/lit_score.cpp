@@ -116,25 +116,42 @@ LitComparison compare_lit(const LitStatistics& ref, const LitStatistics& cand, c
     sum += gs / count;
   }
   c.score = c.groups.empty() ? 0 : sum / double(c.groups.size());
-  c.verdict = c.score <= t.same_score ? "same look" : c.score <= t.close_score ? "close" : "different";
+  double worst_group = 0;
+  for (const LitGroupScore& g : c.groups) worst_group = std::max(worst_group, g.score);
+  c.verdict = c.score <= t.same_score && worst_group <= t.group ? "same look" : c.score <= t.close_score ? "close" : "different";
+  // A word is said when its signal passes `word` and its group as a whole differs beyond `group`,
+  // or when the signal alone passes `strong_word`: two halves of one scan differ by up to 0.26
+  // in a group, and their words' signals then are noise, not a defect.
+  auto group_differs = [&](std::initializer_list<const char*> names) {
+    for (const LitGroupScore& g : c.groups)
+      for (const char* n : names)
+        if (g.group == n && g.score > t.group) return true;
+    return false;
+  };
+  auto says = [&](bool group, double signal) { return (group && signal > t.word) || signal > t.strong_word; };
 
   // The words, each from the signed differences of its statistics (candidate − reference).
   const double dark =
       strongest({rows.signed_of("near_black_share"), -rows.signed_of("log_luminance_p01"), -rows.signed_of("log_luminance_p05")});
-  if (dark > t.word) c.words.push_back("fissures too dark");
-  if (dark < -t.word) c.words.push_back("fissures too light");
+  const bool dark_differs = group_differs({"dark", "tone"});
+  if (says(dark_differs, dark)) c.words.push_back("fissures too dark");
+  if (says(dark_differs, -dark)) c.words.push_back("fissures too light");
   const double fine_contrast = rows.signed_of("local_contrast_" + number(kLitParams.contrast_sigma_cm[0]) + "cm");
   const double fine =
       fine_r + fine_c > 0 ? 0.5 * (fine_contrast + signed_relative(fine_r, fine_c, kBandShareFloor)) : fine_contrast;
-  if (fine < -t.word) c.words.push_back("ridges too smooth");
-  if (fine > t.word) c.words.push_back("too much fine detail");
+  const bool detail_differs = group_differs({"spectrum", "contrast"});
+  if (says(detail_differs, -fine)) c.words.push_back("ridges too smooth");
+  if (says(detail_differs, fine)) c.words.push_back("too much fine detail");
   const double relief = 0.5 * (rows.signed_of("local_contrast_" + number(kLitParams.contrast_sigma_cm[1]) + "cm") +
                                rows.signed_of("local_contrast_" + number(kLitParams.contrast_sigma_cm[2]) + "cm"));
-  if (relief > t.word) c.words.push_back("relief too strong");
-  if (relief < -t.word) c.words.push_back("relief too weak");
-  const double spread = signed_relative(std::hypot(cr.a_std, cr.b_std), std::hypot(cc.a_std, cc.b_std), kColourStdFloor);
-  if (spread < -t.word) c.words.push_back("colour too uniform");
-  if (spread > t.word) c.words.push_back("colour too varied");
+  const bool relief_differs = group_differs({"contrast"});
+  if (says(relief_differs, relief)) c.words.push_back("relief too strong");
+  if (says(relief_differs, -relief)) c.words.push_back("relief too weak");
+  // Colour spread along the chroma axis that changed most (a* red–green or b* yellow–blue).
+  const double spread = strongest({rows.signed_of("colour_a_std"), rows.signed_of("colour_b_std")});
+  const bool colour_differs = group_differs({"colour"});
+  if (says(colour_differs, -spread)) c.words.push_back("colour too uniform");
+  if (says(colour_differs, spread)) c.words.push_back("colour too varied");
   // The cast along its stronger axis: b* is yellow (warm) – blue (cool), a* red – green.
   if (cast > t.cast_delta_e) {
     if (std::abs(db) >= std::abs(da))

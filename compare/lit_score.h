@@ -10,12 +10,16 @@
 
 namespace phellem {
 
-// Every threshold of the verdict and the words. Not yet calibrated on real renders: change
-// them here (or pass another LitThresholds) when they are.
+// Every threshold of the verdict and the words, calibrated on the reference scans under the lit
+// rig (docs/compare.md, "Lit calibration"; bench/lit_calibration.cpp): halves of one scan score
+// 0.054–0.157 with no group above 0.26; the deliberate defects each put one group at 0.37 or
+// more; Bark Brown vs Pine scores 0.25.
 struct LitThresholds {
-  double same_score = 0.10;            // score ≤ this: "same look"
-  double close_score = 0.20;           // score ≤ this: "close", above: "different"
-  double word = 0.25;                  // a signed difference beyond ± this names a defect
+  double same_score = 0.16;            // score ≤ this and no group over `group`: "same look"
+  double close_score = 0.22;           // score ≤ this: "close", above: "different"
+  double group = 0.30;                 // a group differing by more is never the "same look", and only then are its words said
+  double word = 0.25;                  // a signed difference beyond ± this names a defect (when its group differs)
+  double strong_word = 0.5;            // ... and beyond ± this whatever its group
   double cast_delta_e = 4;             // |Δ(mean a*, mean b*)| in ΔE*ab units that names a cast
   double orientation_emd_deg = 10;     // circular EMD of the edge histograms: "grain direction differs"
   double fine_band_cycles_per_cm = 1;  // octaves from here up are the "fine detail" of the spectrum
