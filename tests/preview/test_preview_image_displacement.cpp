@@ -12,7 +12,9 @@
 #include <memory>
 
 #include "preview/preview_renderer.h"
+#include "bark/dressing/field_bark_surface.h"
 #include "preview/preview_scene.h"
+#include "scene/bark_results.h"
 #include "scene/displacement.h"
 #include "scene/displacement_map.h"
 #include "scene/object_meshes.h"
@@ -223,4 +225,58 @@ TEST(TreeImageDisplacement, TrunkAndBranchAreDisplacedAtTheTreesTexcoordsAsTheCp
   std::printf("  tree: %zu vertices, max deviation %.3g m (wrong midlevel %.3g m)\n", dev.vertices, dev.worst, dev.wrong);
   EXPECT_LT(dev.worst, kTolerance);
   EXPECT_GT(dev.wrong, 10 * kTolerance);
+}
+
+// Strip bark: the image's offset adds to the FractureField's depth, as the path tracer's
+// per-part displacement adds them (renderer/scene_contents.cpp). This also compares the field's
+// own lookup, which missed by up to the fracture depth left of the first texel centre (u = 0:
+// GLSL's % of a negative column index) until fracture_field.glsl wrapped it as the C++ does.
+TEST(TreeImageDisplacement, OnStripBarkTheImageAddsToTheFractureDepth) {
+  PHELLEM_REQUIRE_GL();
+  SceneDesc desc = parse_scene(R"({
+    "camera": {"position": [0.0, 0.5, 0.5], "look_at": [0, 0.5, 0], "fov_deg": 35},
+    "objects": [{"type": "tree", "axis": [[0, 0, 0], [0, 1.0, 0]], "radius": [0.1, 0.08],
+      "bark": {"model": "strips", "preset": "furrowed", "steps": 150, "growth_rate": 1.004, "strip_width": 0.006, "seed": 4,
+               "depth": {"max_depth": 0.012, "depth_per_width": 1.2}}}]
+  })", "strips.json", ".");
+  TreeDesc& tree = desc.objects[0].tree;
+  tree.texture_displacement = image(ramp_map(), 0.006f, 0.5f, 1.0f, false);
+  desc.objects[0].displacement = tree.texture_displacement;
+  const BarkResults bark = simulate_bark(desc, false);
+  const PreviewScene scene = build_preview_scene(desc, bark);
+  ASSERT_EQ(scene.objects.size(), 1u);
+  ASSERT_EQ(scene.objects[0].bark, BarkKind::Field);
+  ASSERT_TRUE(scene.objects[0].image);
+  const auto& strips = bark.find(0)->strip_parts;
+  ASSERT_EQ(strips.size(), 1u);
+  // As scene_contents.cpp builds the parts it dices.
+  auto parts_with = [&](const TreeDesc& t) {
+    const DisplacementFn disp = make_displacement(t.displacement);
+    return build_tree(t, [&](size_t k) -> DisplacementFn {
+      std::shared_ptr<const bark::FieldBarkSurface> b = strips[k];
+      return [b, disp](const Vec2f& uv, const Vec3f& p) {
+        bark::SurfacePoint sp;
+        sp.param = Eigen::Vector2d(uv.x(), uv.y() / b->length());
+        sp.position = p;
+        return disp(uv, p) + b->displace(sp).offset;
+      };
+    });
+  };
+  const auto parts = parts_with(tree);
+  TreeDesc wrong_tree = tree;
+  wrong_tree.texture_displacement.midlevel += 0.01f;
+  const auto wrong_parts = parts_with(wrong_tree);
+  auto offset_of = [](const std::vector<TreePart>& ps) {
+    return [&ps](size_t k, float u, float v) {
+      float offset = 0;
+      ps[k].surface.position(u, v, &offset);
+      return offset;
+    };
+  };
+  const std::function<float(size_t, float, float)> cpp = offset_of(parts), wrong = offset_of(wrong_parts);
+  const Deviation dev = compare_tree_parts(scene, CameraModel(desc.camera, 200, 200), cpp, wrong);
+  RecordProperty("max_deviation_m", std::to_string(dev.worst));
+  std::printf("  strip tree: %zu vertices, max deviation %.3g m (wrong midlevel %.3g m)\n", dev.vertices, dev.worst, dev.wrong);
+  EXPECT_LT(dev.worst, kTolerance);
+  EXPECT_GT(dev.wrong, 5 * kTolerance);
 }
