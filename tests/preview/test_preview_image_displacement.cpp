@@ -3,8 +3,9 @@
 // patch_surface / the tree's parametric surface put it, within 1e-5 m. Patches with maps made
 // here (a sine that tiles and a ramp that does not) in repeat and clamp modes, past the map's
 // edges; a tree's trunk and branch at the tree's texcoords; a strip tree, where the image adds
-// to the FractureField's depth. Each comparison also runs against a wrong C++ reference (another
-// midlevel, the other wrap), which must miss: the check can fail.
+// to the FractureField's depth; a stress-bark trunk, where it adds to the cracks. Each
+// comparison also runs against a wrong C++ reference (another midlevel, the other wrap), which
+// must miss: the check can fail.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <memory>
 
 #include "preview/preview_renderer.h"
+#include "bark/dressing/crack_bark_surface.h"
 #include "bark/dressing/field_bark_surface.h"
 #include "preview/preview_scene.h"
 #include "scene/bark_results.h"
@@ -279,4 +281,50 @@ TEST(TreeImageDisplacement, OnStripBarkTheImageAddsToTheFractureDepth) {
   std::printf("  strip tree: %zu vertices, max deviation %.3g m (wrong midlevel %.3g m)\n", dev.vertices, dev.worst, dev.wrong);
   EXPECT_LT(dev.worst, kTolerance);
   EXPECT_GT(dev.wrong, 5 * kTolerance);
+}
+
+// Stress bark on a mesh: the image at the mesh's UVs adds to the cracks' V-profiles, as the
+// path tracer's stress job adds its own displacement to them (renderer/scene_contents.cpp).
+TEST(MeshImageDisplacement, OnStressBarkTheImageAddsToTheCracks) {
+  PHELLEM_REQUIRE_GL();
+  SceneDesc desc = parse_scene(R"({
+    "camera": {"position": [0.0, 0.3, 0.3], "look_at": [0, 0.3, 0], "fov_deg": 30},
+    "objects": [{"type": "mesh",
+      "procedural": {"shape": "trunk", "triangles": 3000, "radius": 0.1, "height": 0.6},
+      "bark": {"model": "stress", "preset": "woodification", "iterations": 40, "alpha": 0.8, "seed": 5,
+               "crack": {"width_per_edge": 0.002, "max_width": 0.008, "max_depth": 0.01}}}]
+  })", "trunk.json", ".");
+  desc.objects[0].displacement = image(sine_map(), 0.004f, 0.5f, 2.0f, false);
+  const BarkResults bark = simulate_bark(desc, false);
+  const PreviewScene scene = build_preview_scene(desc, bark);
+  ASSERT_EQ(scene.objects.size(), 1u);
+  ASSERT_EQ(scene.objects[0].bark, BarkKind::Cracks);
+  ASSERT_TRUE(scene.objects[0].image);
+  PreviewRenderer renderer(scene);
+  const auto fb = renderer.capture(0, CameraModel(desc.camera, 160, 160), fine());
+  ASSERT_GT(fb.base.size(), 3000u);
+  const auto& surface = *scene.objects[0].surface;
+  const DisplacementFn own = make_displacement(desc.objects[0].displacement);
+  DisplacementDesc other_mid = desc.objects[0].displacement;
+  other_mid.midlevel += 0.01f;
+  const DisplacementFn wrong = make_displacement(other_mid);
+  Deviation dev;
+  int in_cracks = 0;
+  for (size_t k = 0; k < fb.base.size(); ++k) {
+    const Vec3f n = fb.normal[k].normalized();
+    bark::SurfacePoint p;
+    p.position = fb.base[k];
+    p.normal = n;
+    const bark::BarkDisplacement d = surface.displace(p);
+    in_cracks += d.attributes.y() > 0;
+    const Vec2f t = fb.texcoord[k];
+    dev.worst = std::max(dev.worst, double((fb.displaced[k] - (fb.base[k] + (own(t, fb.base[k]) + d.offset) * n)).norm()));
+    dev.wrong = std::max(dev.wrong, double((fb.displaced[k] - (fb.base[k] + (wrong(t, fb.base[k]) + d.offset) * n)).norm()));
+  }
+  RecordProperty("max_deviation_m", std::to_string(dev.worst));
+  std::printf("  stress mesh: %zu vertices (%d in cracks), max deviation %.3g m (wrong midlevel %.3g m)\n", fb.base.size(),
+              in_cracks, dev.worst, dev.wrong);
+  EXPECT_LT(dev.worst, kTolerance);
+  EXPECT_GT(dev.wrong, 2 * kTolerance);
+  EXPECT_GT(in_cracks, 100);
 }
