@@ -56,10 +56,12 @@ PreviewRenderer::PreviewRenderer(const PreviewScene& scene) : scene_(scene) {
     m.vbo[1] = buffer(GL_ARRAY_BUFFER, o.normals);
     m.vbo[2] = buffer(GL_ARRAY_BUFFER, o.params);
     m.vbo[3] = buffer(GL_ARRAY_BUFFER, o.crack_near);
+    m.vbo[4] = buffer(GL_ARRAY_BUFFER, o.texcoords.size() == o.positions.size() ? o.texcoords
+                                                                                : std::vector<Vec2f>(o.positions.size(), Vec2f::Zero()));
     m.ibo = buffer(GL_ELEMENT_ARRAY_BUFFER, o.indices);
-    const GLint sizes[4] = {3, 3, 2, 1};
-    const GLsizei strides[4] = {sizeof(Vec3f), sizeof(Vec3f), sizeof(Vec2f), sizeof(float)};
-    for (GLuint a = 0; a < 4; ++a) {
+    const GLint sizes[5] = {3, 3, 2, 1, 2};
+    const GLsizei strides[5] = {sizeof(Vec3f), sizeof(Vec3f), sizeof(Vec2f), sizeof(float), sizeof(Vec2f)};
+    for (GLuint a = 0; a < 5; ++a) {
       glVertexArrayVertexBuffer(m.vao, a, m.vbo[a], 0, strides[a]);
       glVertexArrayAttribFormat(m.vao, a, sizes[a], GL_FLOAT, GL_FALSE, 0);
       glVertexArrayAttribBinding(m.vao, a, a);
@@ -79,6 +81,14 @@ PreviewRenderer::PreviewRenderer(const PreviewScene& scene) : scene_(scene) {
       glTextureStorage2D(m.tex[1], 1, GL_RGBA32F, o.field->width, o.field->height);
       glTextureSubImage2D(m.tex[1], 0, 0, 0, o.field->width, o.field->height, GL_RGBA, GL_FLOAT, o.field->albedo.data());
     }
+    if (o.image) {  // the map's values as they are stored: texel (i, j) is value[j × width + i], row 0 at the top
+      const DisplacementMap& d = *o.image->map;
+      glCreateTextures(GL_TEXTURE_2D, 1, &m.image);
+      glTextureStorage2D(m.image, 1, GL_R32F, d.width, d.height);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTextureSubImage2D(m.image, 0, 0, 0, d.width, d.height, GL_RED, GL_FLOAT, d.value.data());
+      m.image_reach = o.image->reach();
+    }
     meshes_.push_back(m);
   }
 }
@@ -90,6 +100,7 @@ PreviewRenderer::~PreviewRenderer() {
     glDeleteBuffers(1, &m.ibo);
     glDeleteBuffers(3, m.ssbo);
     glDeleteTextures(2, m.tex);
+    if (m.image) glDeleteTextures(1, &m.image);
   }
   if (environment_) glDeleteTextures(1, &environment_);
   glDeleteVertexArrays(1, &empty_vao_);
@@ -141,6 +152,7 @@ void PreviewRenderer::set_uniforms(const GlProgram& p, const CameraModel& camera
   p.set("ground_color", scene_.ground_color);
   p.set("field_depth_mask", 0);
   p.set("field_albedo", 1);
+  p.set("displacement_map", 3);
 }
 
 void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
@@ -182,6 +194,14 @@ void PreviewRenderer::bind_object(const GlProgram& p, size_t k) const {
       glProgramUniform3fv(p.id(), p.location("fissure_tints"), GLsizei(c.fissure_tints.size()), c.fissure_tints[0].data());
     p.set("tint_size", c.look.tint_size);
     p.set("tint_seed", c.tint_seed);
+  }
+  p.set("displacement_reach", m.image_reach);
+  if (o.image) {
+    glBindTextureUnit(3, m.image);
+    p.set("displacement_scale", o.image->scale);
+    p.set("displacement_midlevel", o.image->midlevel);
+    p.set("displacement_uv_repeat", o.image->uv_repeat);
+    p.set("displacement_clamp", o.image->clamp ? 1 : 0);
   }
   if (o.field) {
     glBindTextureUnit(0, m.tex[0]);
@@ -232,7 +252,8 @@ void PreviewRenderer::draw_text(const std::string& text, int framebuffer_height,
 }
 
 std::string PreviewRenderer::variant(const PreviewObject& o, bool tints) {
-  return bark_defines(int(o.bark), tints && o.cracks && (!o.cracks->ridge_tints.empty() || !o.cracks->fissure_tints.empty()));
+  return bark_defines(int(o.bark), tints && o.cracks && (!o.cracks->ridge_tints.empty() || !o.cracks->fissure_tints.empty()),
+                      o.image != nullptr);
 }
 
 const GlProgram& PreviewRenderer::program_for(const PreviewObject& o, bool tints) {
@@ -333,7 +354,7 @@ PreviewFrame PreviewRenderer::render(const CameraModel& camera, const PreviewSet
 }
 
 PreviewRenderer::Feedback PreviewRenderer::capture(size_t k, const CameraModel& camera, const PreviewSettings& s) {
-  GlProgram p(variant(scene_.objects[k], s.tints), {"te_base", "te_world"});
+  GlProgram p(variant(scene_.objects[k], s.tints), {"te_base", "te_world", "te_normal", "te_texcoord", "te_param"});
   // A surfaceless context has no default framebuffer: draw into ours (nothing is rasterized).
   ensure_targets(camera.width(), camera.height());
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -354,7 +375,8 @@ PreviewRenderer::Feedback PreviewRenderer::capture(size_t k, const CameraModel& 
   GLuint64 prims = 0;
   glGetQueryObjectui64v(query, GL_QUERY_RESULT, &prims);
   glDeleteQueries(1, &query);
-  const size_t floats = size_t(prims) * 3 * 6;
+  constexpr size_t kFloats = 3 + 3 + 3 + 2 + 2;  // a vertex's varyings, interleaved
+  const size_t floats = size_t(prims) * 3 * kFloats;
   GLuint tfb = 0;
   glCreateBuffers(1, &tfb);
   glNamedBufferStorage(tfb, GLsizeiptr(std::max<size_t>(1, floats) * sizeof(float)), nullptr, GL_MAP_READ_BIT);
@@ -368,9 +390,12 @@ PreviewRenderer::Feedback PreviewRenderer::capture(size_t k, const CameraModel& 
   glDeleteBuffers(1, &tfb);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   Feedback fb;
-  for (size_t v = 0; v + 6 <= data.size(); v += 6) {
+  for (size_t v = 0; v + kFloats <= data.size(); v += kFloats) {
     fb.base.emplace_back(data[v], data[v + 1], data[v + 2]);
     fb.displaced.emplace_back(data[v + 3], data[v + 4], data[v + 5]);
+    fb.normal.emplace_back(data[v + 6], data[v + 7], data[v + 8]);
+    fb.texcoord.emplace_back(data[v + 9], data[v + 10]);
+    fb.param.emplace_back(data[v + 11], data[v + 12]);
   }
   return fb;
 }

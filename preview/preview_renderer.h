@@ -61,9 +61,12 @@ class PreviewRenderer {
   void draw_text(const std::string& text, int framebuffer_height, int scale) const;
 
   // Transform feedback of one object's tessellated vertices (tests): per generated triangle
-  // vertex, the undisplaced point (object space) and the displaced one (world space).
+  // vertex, the undisplaced point (object space), the displaced one and the interpolated base
+  // normal (world space, not normalized), the texcoords an image displacement was looked up at
+  // and the patch parameters (a tree part's (u, v)).
   struct Feedback {
-    std::vector<Vec3f> base, displaced;
+    std::vector<Vec3f> base, displaced, normal;
+    std::vector<Vec2f> texcoord, param;
   };
   Feedback capture(size_t object, const CameraModel& camera, const PreviewSettings& settings);
 
@@ -72,6 +75,8 @@ class PreviewRenderer {
  private:
   struct GpuMesh {
     GLuint vao = 0, vbo[5] = {}, ibo = 0, ssbo[3] = {}, tex[2] = {};
+    GLuint image = 0;        // an image displacement's map (R32F), or none
+    float image_reach = 0;   // the most it moves a point (m): the culling's margin
     GLsizei count = 0;
   };
   void set_uniforms(const GlProgram& p, const CameraModel& camera, const PreviewSettings& s) const;

@@ -14,6 +14,7 @@
 #include "scene/mesh_source.h"
 #include "scene/object_meshes.h"
 #include "scene/tree_surface.h"
+#include "util/errors.h"
 
 namespace phellem::preview {
 
@@ -85,6 +86,24 @@ GpuCracks gpu_cracks(const bark::CrackBarkSurface& surface, size_t max_cells) {
   return g;
 }
 
+float GpuImageDisplacement::reach() const {
+  float most = 0;
+  if (map)
+    for (float v : map->value) most = std::max(most, std::abs(v - midlevel));
+  return std::abs(scale) * most;
+}
+
+GpuImageDisplacement gpu_image_displacement(const DisplacementDesc& d) {
+  if (d.type != DisplacementDesc::Type::Image || !d.map) throw std::logic_error("gpu_image_displacement: not an image displacement");
+  GpuImageDisplacement g;
+  g.map = d.map;
+  g.scale = d.scale;
+  g.midlevel = d.midlevel;
+  g.uv_repeat = d.uv_repeat;
+  g.clamp = d.clamp;
+  return g;
+}
+
 size_t PreviewScene::triangles() const {
   size_t n = 0;
   for (const auto& o : objects) n += o.triangles();
@@ -107,6 +126,7 @@ PreviewObject from_mesh(const MeshData& m) {
   }
   o.params.assign(o.positions.size(), Vec2f::Zero());
   o.crack_near.assign(o.positions.size(), 0.0f);
+  o.texcoords = m.uvs.size() == m.positions.size() ? m.uvs : std::vector<Vec2f>(m.positions.size(), Vec2f::Zero());
   o.indices = m.indices;
   return o;
 }
@@ -156,6 +176,7 @@ PreviewObject tree_part(const TreePart& part, const DisplacementFn& disp, std::s
     for (int i = 0; i <= nu; ++i) {
       const float u = float(i) / nu, v = float(j) / nv;
       o.params.emplace_back(u, v);
+      o.texcoords.push_back(part.surface.texcoord(u, v));  // the albedo's and an image displacement's
       if (i == nu) {  // the seam: bitwise the first column's point, so both sides tessellate alike
         o.positions.push_back(o.positions[size_t(j) * size_t(nu + 1)]);
         o.normals.push_back(o.normals[size_t(j) * size_t(nu + 1)]);
@@ -186,6 +207,21 @@ PreviewObject tree_part(const TreePart& part, const DisplacementFn& disp, std::s
     o.surface = field;
   }
   return o;
+}
+
+// An image displacement on an object drawn from triangles with texcoords: looked up on the GPU,
+// and every edge tessellated finely (it reaches everywhere, as a fracture field does).
+void add_image_displacement(PreviewObject& p, const DisplacementDesc& d) {
+  p.image = std::make_shared<const GpuImageDisplacement>(gpu_image_displacement(d));
+  std::fill(p.crack_near.begin(), p.crack_near.end(), 1.0f);
+}
+
+// As the path tracer (renderer/scene_contents.cpp): an image displacement needs texcoords.
+void require_texcoords(const ObjectDesc& o, bool has_texcoords) {
+  if (o.displacement.type == DisplacementDesc::Type::Image && !has_texcoords)
+    throw UserError(o.where.file, o.where.path + "/displacement",
+                    "an image displacement is looked up at the mesh's texture coordinates, and " +
+                        (o.file.empty() ? std::string("this mesh") : printable(o.file)) + " has none (export it with UVs)");
 }
 
 Vec3f material_color(const SceneDesc& desc, const std::string& name) {
@@ -254,6 +290,7 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
     const ObjectDesc& o = desc.objects[oi];
     const Vec3f color = material_color(desc, o.material);
     std::vector<PreviewObject> made;
+    const bool image = o.displacement.type == DisplacementDesc::Type::Image;
     switch (o.type) {
       case ObjectType::Sphere:
         made.push_back(from_mesh(sphere_mesh(o.center, o.radius, 48, 24)));  // fewer patches: the tessellator refines
@@ -263,38 +300,68 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
         break;
       case ObjectType::Patch:
         made.push_back(from_mesh(patch_mesh(o, 16, 16)));
+        if (image) add_image_displacement(made.back(), o.displacement);
         break;
       case ObjectType::Tree:
       case ObjectType::Mesh: {
+        // A mesh's image displacement adds to its cracks (a tree's is in its cracked or grown
+        // mesh already, as the path tracer's).
+        const bool mesh_image = o.type == ObjectType::Mesh && image;
         if (o.stress_bark && bark_of(oi).cracked) {
           made.push_back(stress_preview_object(*bark_of(oi).cracked, crack_surface(o, *bark_of(oi).cracked)));
+          if (mesh_image) {
+            const bark::TriMesh& cracked = bark_of(oi).cracked->mesh;
+            require_texcoords(o, !cracked.uvs.empty() && cracked.uvs.size() == cracked.positions.size());
+            add_image_displacement(made.back(), o.displacement);
+          }
           break;
         }
         if (o.growth) {  // the surface at the last step of its cambial growth (world space)
           MeshData w = to_mesh_data(*bark_of(oi).grown);
           compute_vertex_normals(w, true);  // its UV seams are cut (growth_run.h): shade across them as one surface
+          if (mesh_image) require_texcoords(o, w.uvs.size() == w.positions.size());
           made.push_back(from_mesh(w));
+          if (mesh_image) add_image_displacement(made.back(), o.displacement);
           break;
         }
         if (o.type == ObjectType::Tree) {
           const DisplacementFn disp = make_displacement(o.tree.displacement);
+          // The grid's vertices carry the procedural displacement; the image's is the GPU's.
           const auto parts = build_tree(o.tree, disp);
+          const bool tree_image = o.tree.texture_displacement.type == DisplacementDesc::Type::Image;
           const auto* strips = o.tree.strip_bark ? &bark_of(oi).strip_parts : nullptr;
-          for (size_t k = 0; k < parts.size(); ++k)
+          for (size_t k = 0; k < parts.size(); ++k) {
             made.push_back(tree_part(parts[k], disp, strips && k < strips->size() ? (*strips)[k] : nullptr));
+            if (tree_image) add_image_displacement(made.back(), o.tree.texture_displacement);
+          }
           break;
         }
         if (o.procedural) {
           MeshData w = to_mesh_data(object_trimesh(o));
           compute_vertex_normals(w);
+          if (mesh_image) require_texcoords(o, w.uvs.size() == w.positions.size());
           made.push_back(from_mesh(w));
+          if (mesh_image) add_image_displacement(made.back(), o.displacement);
           break;
         }
         const LoadedModel model = load_mesh_file(o.file);
         for (const auto& m : model.meshes) {
-          PreviewObject p = from_mesh(m);
-          p.model = o.transform.matrix;
-          made.push_back(std::move(p));
+          if (!mesh_image) {
+            PreviewObject p = from_mesh(m);
+            p.model = o.transform.matrix;
+            made.push_back(std::move(p));
+            continue;
+          }
+          // Displaced in world space along world normals, in metres, as the path tracer
+          // flattens a displaced mesh (a scaled model matrix would scale the offset).
+          MeshData w = m;
+          const Mat3f nrm = o.transform.matrix.topLeftCorner<3, 3>().inverse().transpose();
+          for (auto& p : w.positions) p = transform_point(o.transform.matrix, p);
+          for (auto& n : w.normals) n = (nrm * n).normalized();
+          if (w.normals.empty()) compute_vertex_normals(w);
+          require_texcoords(o, w.uvs.size() == w.positions.size());
+          made.push_back(from_mesh(w));
+          add_image_displacement(made.back(), o.displacement);
         }
         break;
       }

@@ -13,6 +13,7 @@
 #include "bark/dressing/crack_profile.h"
 #include "bark/dressing/field_bark_surface.h"
 #include "scene/bark_results.h"
+#include "scene/displacement_map.h"
 #include "scene/scene_desc.h"
 #include "util/math.h"
 
@@ -44,12 +45,26 @@ struct GpuField {
 
 enum class BarkKind { None = 0, Cracks = 1, Field = 2 };
 
+// An image displacement (`"displacement": {"type": "image"}`, scene/displacement_map.h) for the
+// evaluation stage (shaders/displacement_map.glsl): the map as an R32F texture (rows as the
+// map stores them, row 0 at the top), looked up at the interpolated texcoords; its offset adds
+// to the bark's (cracks or a fracture field).
+struct GpuImageDisplacement {
+  std::shared_ptr<const DisplacementMap> map;
+  float scale = 0.01f, midlevel = 0.5f, uv_repeat = 1.0f;
+  bool clamp = false;
+  // The most the offset can move a point either way (m): |scale| × the map's largest |value − midlevel|.
+  float reach() const;
+};
+GpuImageDisplacement gpu_image_displacement(const DisplacementDesc& d);
+
 struct PreviewObject {
   std::string name;
   int object_id = 0;  // 1-based, as the path tracer's object_id AOV
   std::vector<Vec3f> positions, normals;  // object space
   std::vector<Vec2f> params;              // strip bark: the part's (u, v); else 0
-  std::vector<float> crack_near;          // 1 where a crack can reach an edge at this vertex
+  std::vector<float> crack_near;          // 1 where a crack (or an image displacement) can reach an edge at this vertex
+  std::vector<Vec2f> texcoords;           // where an image displacement is looked up (0 without one)
   std::vector<uint32_t> indices;          // triangles: the patches
   Mat4f model = Mat4f::Identity();
   Vec3f base_color{0.8f, 0.8f, 0.8f};
@@ -57,6 +72,7 @@ struct PreviewObject {
   bool curved = false;  // a smooth surface sampled at the grid's vertices: curved (PN) patches
   std::shared_ptr<const GpuCracks> cracks;
   std::shared_ptr<const GpuField> field;
+  std::shared_ptr<const GpuImageDisplacement> image;  // added to the bark's offset, if any
   std::shared_ptr<const bark::BarkSurface> surface;  // the C++ surface the GPU mirrors
   size_t triangles() const { return indices.size() / 3; }
 };
@@ -91,6 +107,11 @@ constexpr float kPresubdivideHalfWidths = 32;
 PreviewObject stress_preview_object(const bark::CrackedMesh& cracked, std::shared_ptr<const bark::CrackBarkSurface> surface);
 
 // Every tree with strip bark and every stress-bark object must have its entry in `bark`.
+// Image displacements are drawn where the path tracer dices them: on patches, on meshes at
+// their UVs (stress bark's cracks included; a mesh without UVs is a UserError, as there), on
+// tree parts at the tree's texcoords (strip bark's fracture depth included). A stress or grown
+// tree's image displacement is already in its mesh. Procedural displacements of meshes and
+// patches are not drawn (only a tree's, at the grid's vertices).
 PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark);
 
 }  // namespace phellem::preview

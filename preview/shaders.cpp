@@ -22,15 +22,16 @@ std::vector<std::string> stage_files(Stage s) {
     case Stage::TessControl:
       return {"common.glsl", "bark.tesc"};
     case Stage::TessEvaluation:
-      return {"common.glsl", "noise.glsl", "crack_profile.glsl", "fracture_field.glsl", "bark.tese"};
+      return {"common.glsl", "noise.glsl", "crack_profile.glsl", "fracture_field.glsl", "displacement_map.glsl", "bark.tese"};
     case Stage::Fragment:
       return {"common.glsl", "noise.glsl", "fracture_field.glsl", "bark_tints.glsl", "bark.frag"};
   }
   return {};
 }
 
-std::string bark_defines(int bark_kind, bool tints) {
-  return "#define BARK_KIND " + std::to_string(bark_kind) + "\n#define BARK_TINTS " + (tints ? "1" : "0") + "\n";
+std::string bark_defines(int bark_kind, bool tints, bool image_displacement) {
+  return "#define BARK_KIND " + std::to_string(bark_kind) + "\n#define BARK_TINTS " + (tints ? "1" : "0") +
+         "\n#define IMAGE_DISPLACEMENT " + (image_displacement ? "1" : "0") + "\n";
 }
 
 std::string stage_source(Stage s, const std::string& defines) {

@@ -18,8 +18,9 @@ std::vector<std::string> stage_files(Stage s);
 // The whole source of a stage, starting with "#version 450 core" and the variant's `defines`
 // (e.g. "#define BARK_KIND 1\n", shaders/common.glsl).
 std::string stage_source(Stage s, const std::string& defines = "");
-// The defines of a variant of the bark program.
-std::string bark_defines(int bark_kind, bool tints);
+// The defines of a variant of the bark program: its bark kind, whether stress bark is tinted,
+// whether an image displacement adds to the bark's offset.
+std::string bark_defines(int bark_kind, bool tints, bool image_displacement = false);
 // A full-screen pass: background.vert and the given fragment file (background.frag, overlay.frag).
 std::string screen_source(Stage s, const std::string& fragment_file);
 // glslangValidator's file extension for a stage (.vert, .tesc, .tese, .frag).

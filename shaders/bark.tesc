@@ -9,9 +9,11 @@ in vec3 vs_position[];
 in vec3 vs_normal[];
 in vec2 vs_param[];
 in float vs_crack_near[];
+in vec2 vs_texcoord[];
 out vec3 tc_position[];
 out vec3 tc_normal[];
 out vec2 tc_param[];
+out vec2 tc_texcoord[];
 
 uniform mat4 model_view_projection;
 uniform vec2 viewport;             // pixels
@@ -22,6 +24,7 @@ uniform int asymmetric_levels;     // tests only: 1 makes levels depend on the p
 uniform vec3 camera_position;      // world space
 uniform mat4 inverse_model;
 uniform int cull_patches;          // 0: tessellate every patch
+uniform float displacement_reach;  // the most an image displacement moves a point (object space, m)
 
 bool before(vec3 a, vec3 b) { return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z))); }
 
@@ -44,16 +47,22 @@ float edge_level(int i, int j) {
   return clamp(level, 1.0, max_level);
 }
 
-// A patch nobody can see: every corner beyond the same side of the view frustum (with a
-// margin for the displacement), or every corner's normal facing away from the eye (bark only
-// carves inwards, so a back-facing patch stays hidden behind the front of the surface).
+// A patch nobody can see: every corner, moved either way along its normal by as much as an
+// image displacement can move it, beyond the same side of the view frustum (with a margin for
+// the bark's displacement), or every corner's normal facing away from the eye (bark only
+// carves inwards, so a back-facing patch stays hidden behind the front of the surface; an
+// image's bumps could only peek over a silhouette by their height, at grazing angles).
 bool culled() {
   if (cull_patches == 0) return false;
-  vec4 c[3];
-  for (int i = 0; i < 3; ++i) c[i] = model_view_projection * vec4(vs_position[i], 1.0);
+  vec4 c[6];
+  for (int i = 0; i < 3; ++i) {
+    const vec3 n = dot(vs_normal[i], vs_normal[i]) > 0.0 ? normalize(vs_normal[i]) : vec3(0.0);
+    c[2 * i] = model_view_projection * vec4(vs_position[i] + displacement_reach * n, 1.0);
+    c[2 * i + 1] = model_view_projection * vec4(vs_position[i] - displacement_reach * n, 1.0);
+  }
   for (int axis = 0; axis < 3; ++axis) {
     bool below = true, above = true;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 6; ++i) {
       const float m = 1.05 * c[i].w;
       below = below && c[i][axis] < -m;
       above = above && c[i][axis] > m;
@@ -72,6 +81,7 @@ void main() {
   tc_position[gl_InvocationID] = vs_position[gl_InvocationID];
   tc_normal[gl_InvocationID] = vs_normal[gl_InvocationID];
   tc_param[gl_InvocationID] = vs_param[gl_InvocationID];
+  tc_texcoord[gl_InvocationID] = vs_texcoord[gl_InvocationID];
   if (gl_InvocationID == 0) {
     if (culled()) {  // a level of 0 discards the patch
       gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelInner[0] = 0.0;

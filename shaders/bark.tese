@@ -1,17 +1,22 @@
 // Displacement of the tessellated surface by the bark (bark/dressing/bark_surface.h): the
-// stress model's crack V-profiles or the strip model's FractureField depth, along the
-// interpolated normal, exactly as the path tracer's dicer displaces its vertices.
+// stress model's crack V-profiles or the strip model's FractureField depth, plus an image
+// displacement at the interpolated texcoords (IMAGE_DISPLACEMENT, shaders/displacement_map.glsl)
+// — the two offsets add, as the path tracer's dicer adds them — along the interpolated normal,
+// exactly as the dicer displaces its vertices.
 layout(triangles, equal_spacing, ccw) in;
 
 in vec3 tc_position[];
 in vec3 tc_normal[];
 in vec2 tc_param[];
+in vec2 tc_texcoord[];
 
 out vec3 te_base;       // undisplaced point (object space)
 out vec3 te_world;      // displaced point (world space)
 out vec4 te_attributes; // the BarkSurface attributes (depth, mask, chain, 0)
 out vec3 te_flat;       // undisplaced point (world space): its derivatives give the flat facet
 out vec3 te_normal;     // interpolated base normal (world space)
+out vec2 te_texcoord;   // where an image displacement was looked up (tests capture it)
+out vec2 te_param;      // the patch parameters (a tree part's (u, v); tests capture them)
 
 uniform mat4 model;
 uniform mat4 view_projection;
@@ -41,6 +46,7 @@ void main() {
   const vec3 nn = w.x * tc_normal[0] + w.y * tc_normal[1] + w.z * tc_normal[2];
   const vec3 n = dot(nn, nn) > 0.0 ? normalize(nn) : vec3(0, 1, 0);
   const vec2 uv = w.x * tc_param[0] + w.y * tc_param[1] + w.z * tc_param[2];
+  const vec2 texcoord = w.x * tc_texcoord[0] + w.y * tc_texcoord[1] + w.z * tc_texcoord[2];
   float offset = 0.0;
   te_attributes = vec4(0.0);
   if (BARK_KIND == 1) {
@@ -52,6 +58,9 @@ void main() {
     offset = -f.depth;
     te_attributes = vec4(uv, 0.0, 0.0);
   }
+  if (IMAGE_DISPLACEMENT != 0) offset += image_displacement_at(texcoord);
+  te_texcoord = texcoord;
+  te_param = uv;
   te_base = p;
   const vec3 displaced = p + offset * n;
   te_world = (model * vec4(displaced, 1.0)).xyz;

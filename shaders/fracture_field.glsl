@@ -15,7 +15,10 @@ FieldSample field_at(vec2 uv) {
   const float x = (uv.x - floor(uv.x)) * float(size.x) - 0.5, y = clamp(uv.y, 0.0, 1.0) * float(size.y) - 0.5;
   const float fx = floor(x), fy = floor(y);
   const float tx = x - fx, ty = y - fy;
-  const int x0 = (int(fx) % size.x + size.x) % size.x, x1 = (x0 + 1) % size.x;
+  // (fx mod width + width) mod width as the C++, without GLSL's % of a negative operand
+  // (undefined: llvmpipe gave the wrong column left of the first texel centre, at u = 0).
+  const int ix = int(fx);
+  const int x0 = ix >= 0 ? ix % size.x : size.x - 1 - (-(ix + 1)) % size.x, x1 = (x0 + 1) % size.x;
   const int y0 = clamp(int(fy), 0, size.y - 1), y1 = clamp(int(fy) + 1, 0, size.y - 1);
   const vec4 a = texelFetch(field_depth_mask, ivec2(x0, y0), 0), b = texelFetch(field_depth_mask, ivec2(x1, y0), 0);
   const vec4 c = texelFetch(field_depth_mask, ivec2(x0, y1), 0), d = texelFetch(field_depth_mask, ivec2(x1, y1), 0);

@@ -71,6 +71,82 @@ TEST(PreviewCli, SnapshotWritesThePngAndTheAovsAtTheRequestedSize) {
   EXPECT_TRUE(test::leftover_temporaries(dir).empty());
 }
 
+// A patch with an image displacement (a 64 × 64 PNG of bumps, written here): the snapshot shows
+// its relief, lit by a low sun, where the same patch without the displacement is one flat
+// shade. Each snapshot's pixels on the patch (the depth AOV) give the luminance spread.
+TEST(PreviewCli, APatchWithAnImageDisplacementShowsItsRelief) {
+  const std::string dir = test::temp_dir("preview_patch");
+  {
+    const int n = 64;
+    std::vector<uint8_t> px(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        px[size_t(j) * n + size_t(i)] =
+            uint8_t(std::lround(127.5 + 127.0 * std::sin(2 * M_PI * 4 * i / n) * std::sin(2 * M_PI * 3 * j / n)));
+    auto out = OIIO::ImageOutput::create(dir + "/bumps.png");
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(dir + "/bumps.png", OIIO::ImageSpec(n, n, 1, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px.data()));
+    out->close();
+  }
+  auto scene = [&](const std::string& name, const std::string& displacement) {
+    const std::string path = dir + "/" + name + ".json";
+    test::write_text(path, R"({
+      "camera": {"position": [0.05, 0.04, 0.35], "look_at": [0, 0, 0], "fov_deg": 40},
+      "lights": [{"type": "sun", "direction": [1, 0.3, 0.35], "irradiance": 3}],
+      "objects": [{"type": "patch", "center": [0, 0, 0], "normal": [0, 0, 1], "up": [0, 1, 0], "size": [0.2, 0.2])" +
+                             displacement + "}]}");
+    return path;
+  };
+  struct Shot {
+    int on_patch = 0;
+    double mean = 0, spread = 0;  // luminance (0..255) on the patch
+  };
+  auto snapshot = [&](const std::string& path, const std::string& name) {
+    const auto r = test::run_phellem("preview " + path + " --snapshot " + dir + "/" + name + ".png -o " + dir + "/" + name +
+                                     ".exr --res 160x160 --quiet");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    Shot s;
+    auto png = OIIO::ImageInput::open(dir + "/" + name + ".png");
+    auto exr = OIIO::ImageInput::open(dir + "/" + name + ".exr");
+    if (!png || !exr) {
+      ADD_FAILURE() << "no snapshot " << name;
+      return s;
+    }
+    std::vector<uint8_t> rgb(160 * 160 * 3);
+    std::vector<float> aov(160 * 160 * 3);
+    EXPECT_TRUE(png->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, rgb.data()));
+    EXPECT_TRUE(exr->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, aov.data()));
+    const int depth = exr->spec().channelindex("depth.Z");
+    double sum = 0, sum2 = 0;
+    for (size_t p = 0; p < rgb.size() / 3; ++p) {
+      if (!std::isfinite(aov[3 * p + size_t(depth)])) continue;
+      const double y = 0.2126 * rgb[3 * p] + 0.7152 * rgb[3 * p + 1] + 0.0722 * rgb[3 * p + 2];
+      ++s.on_patch;
+      sum += y;
+      sum2 += y * y;
+    }
+    if (s.on_patch > 0) {
+      s.mean = sum / s.on_patch;
+      s.spread = std::sqrt(std::max(0.0, sum2 / s.on_patch - s.mean * s.mean));
+    }
+    return s;
+  };
+  const Shot flat = snapshot(scene("flat", ""), "flat");
+  const Shot bumpy = snapshot(
+      scene("bumpy", R"(, "displacement": {"type": "image", "file": "bumps.png", "scale": 0.012, "midlevel": 0.5, "wrap": "repeat"})"),
+      "bumpy");
+  RecordProperty("flat_spread", std::to_string(flat.spread));
+  RecordProperty("bumpy_spread", std::to_string(bumpy.spread));
+  std::printf("  luminance on the patch: flat %.1f ± %.2f (%d px), displaced %.1f ± %.2f (%d px)\n", flat.mean, flat.spread,
+              flat.on_patch, bumpy.mean, bumpy.spread, bumpy.on_patch);
+  EXPECT_GT(flat.on_patch, 160 * 160 / 3);
+  EXPECT_GT(bumpy.on_patch, 160 * 160 / 3);
+  EXPECT_LT(flat.spread, 3.0);           // one flat shade (and the rounding of 8 bits)
+  EXPECT_GT(bumpy.spread, 10.0);         // bumps facing towards and away from the sun
+  EXPECT_GT(bumpy.spread, 5 * flat.spread + 5);
+}
+
 TEST(PreviewCli, MistakesAreExit2WithTheirReason) {
   const std::string dir = test::temp_dir("preview_errors");
   const std::string scene = scene_file(dir);

@@ -3,12 +3,14 @@
 // ambient term of an environment is its irradiance on an upward and a downward surface.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "bark/dressing/crack_bark_surface.h"
 #include "preview/orbit_camera.h"
 #include "preview/preview_scene.h"
 #include "preview/view_file.h"
+#include "scene/displacement_map.h"
 #include "scene/scene_parser.h"
 #include "tests/bark/dressing/cracked_square.h"
 #include "tests/support/test_util.h"
@@ -110,4 +112,41 @@ TEST(PreviewView, TheCameraKeyWritesASceneThatRendersThatView) {
   EXPECT_EQ(back.objects.size(), 1u);
   // An unwritable folder: an exception, not a crash (the window shows "nothing").
   EXPECT_ANY_THROW(write_view_scene(dir + "/missing/trunk.json", c));
+}
+
+// Image displacements reach the GPU where the path tracer dices them: a mesh's at its UVs
+// (every edge tessellated finely), and a mesh without UVs is refused as the path tracer refuses
+// it; a mesh file's transform is applied on the CPU, so the offset stays in metres.
+TEST(PreviewScene, AnImageDisplacementTakesTheMeshsUvsAndNeedsThem) {
+  const std::string dir = test::temp_dir("preview_image_uvs");
+  test::write_text(dir + "/uv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 0.5 0\nvt 0 0.25\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\n");
+  test::write_text(dir + "/bare.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, R"({"objects": [{"type": "mesh", "file": "uv.obj", "transform": {"scale": 2}},
+                                          {"type": "mesh", "file": "bare.obj"}]})");
+  SceneDesc desc = load_scene_file(scene);
+  auto map = std::make_shared<DisplacementMap>();
+  map->width = map->height = 2;
+  map->value = {0, 1, 1, 0};
+  DisplacementDesc d;
+  d.type = DisplacementDesc::Type::Image;
+  d.map = map;
+  desc.objects[0].displacement = d;
+  SceneDesc one = desc;
+  one.objects.pop_back();
+  const PreviewScene s = build_preview_scene(one, BarkResults{});
+  ASSERT_EQ(s.objects.size(), 1u);
+  const PreviewObject& o = s.objects[0];
+  ASSERT_TRUE(o.image);
+  EXPECT_EQ(o.image->map, map);
+  EXPECT_FLOAT_EQ(o.image->reach(), 0.5f * d.scale);
+  ASSERT_EQ(o.texcoords.size(), 3u);
+  EXPECT_TRUE(o.texcoords[1].isApprox(Vec2f(0.5f, 0)));
+  EXPECT_TRUE(o.texcoords[2].isApprox(Vec2f(0, 0.25f)));
+  EXPECT_EQ(std::count(o.crack_near.begin(), o.crack_near.end(), 1.0f), 3);
+  EXPECT_TRUE(o.model.isIdentity());
+  EXPECT_TRUE(o.positions[1].isApprox(Vec3f(2, 0, 0)));  // in world space
+  desc.objects[1].displacement = d;
+  test::expect_user_error([&] { build_preview_scene(desc, BarkResults{}); }, "mesh without UVs", scene,
+                          desc.objects[1].where.path + "/displacement", "has none (export it with UVs)");
 }

@@ -25,13 +25,16 @@ int validate(const std::string& path) {
 TEST(ShaderSources, EveryStageValidatesWithGlslangValidator) {
   ASSERT_EQ(std::system("command -v glslangValidator > /dev/null"), 0) << "glslang-tools is not installed";
   const std::string dir = test::temp_dir("shader_sources");
-  // Every variant: no bark, cracks with and without tints, a fracture field.
+  // Every variant: no bark, cracks with and without tints, a fracture field; each with and
+  // without an image displacement.
   for (const auto& [kind, tints] : {std::pair{0, false}, std::pair{1, false}, std::pair{1, true}, std::pair{2, false}})
-    for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEvaluation, Stage::Fragment}) {
-      const std::string path = dir + "/bark_" + std::to_string(kind) + (tints ? "t." : ".") + stage_extension(s);
-      std::ofstream(path) << stage_source(s, bark_defines(kind, tints));
-      EXPECT_EQ(validate(path), 0) << test::read_text(path + ".log");
-    }
+    for (bool image : {false, true})
+      for (Stage s : {Stage::Vertex, Stage::TessControl, Stage::TessEvaluation, Stage::Fragment}) {
+        const std::string path =
+            dir + "/bark_" + std::to_string(kind) + (tints ? "t" : "") + (image ? "i." : ".") + stage_extension(s);
+        std::ofstream(path) << stage_source(s, bark_defines(kind, tints, image));
+        EXPECT_EQ(validate(path), 0) << test::read_text(path + ".log");
+      }
   for (const char* frag : {"background.frag", "overlay.frag"})
     for (Stage s : {Stage::Vertex, Stage::Fragment}) {
       const std::string path = dir + "/" + std::string(frag).substr(0, std::string(frag).find('.')) + "_screen." + stage_extension(s);
@@ -53,5 +56,9 @@ TEST(ShaderSources, StagesStartWithTheVersionAndIncludeTheirFilesInOrder) {
   ASSERT_NE(crack, std::string::npos);
   EXPECT_LT(noise, crack);
   EXPECT_LT(crack, main_at);
+  // The image displacement's lookup comes before the evaluation stage that calls it.
+  const size_t image = tese.find("float image_displacement_at(");
+  ASSERT_NE(image, std::string::npos);
+  EXPECT_LT(image, main_at);
   EXPECT_THROW(shader_file("missing.glsl"), std::logic_error);
 }
