@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <string>
 
 #include "compare/compare_inputs.h"
@@ -37,10 +36,9 @@ LitSubject scan(const std::string& dir, const std::string& height, const std::st
 
 struct Bench {
   LitRig rig;
-  std::string work = std::filesystem::temp_directory_path().string();
   LitStatistics measure(const LitSubject& s) const {
     const auto t0 = std::chrono::steady_clock::now();
-    const LitRender r = render_lit(s, rig, work);
+    const LitRender r = render_lit(s, rig);
     const LitStatistics st = lit_statistics(r.image, s.label);
     std::fprintf(stderr, "  rendered %-28s %4d×%-4d px in %5.1f s\n", s.label.c_str(), r.image.width, r.image.height,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

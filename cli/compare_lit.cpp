@@ -1,7 +1,6 @@
 #include "cli/compare_lit.h"
 
 #include <cstdio>
-#include <filesystem>
 
 #include "lookdev/lit_rig.h"
 #include "cli/outputs.h"
@@ -29,7 +28,7 @@ const char* kind_name(HeightImage::Kind k) {
 LitSubject subject(const PreparedInput& in, HeightImage::Kind kind, const std::optional<double>& relief, std::string* note) {
   const std::string& label = in.source.label;
   if (kind == HeightImage::Kind::plain && !relief)
-    throw UserError("--relief " + label, "",
+    throw UserError("", "--relief " + label,
                     label + " (" + printable(in.source.path) +
                         ") is a plain height image, whose values (0 to 1) state no physical height: give --relief " + label +
                         "=METRES, the height of its full range in metres (e.g. 0.02 for bark with fissures about 2 cm deep)");
@@ -58,12 +57,11 @@ int run_compare_lit(const LoadedInput& a, const LoadedInput& b, const LitOptions
   LitRig rig;
   rig.spp = lit.spp;
   rig.sky = !lit.no_sky;
-  const std::string work = std::filesystem::temp_directory_path().string();
   auto render = [&](const LitSubject& side) {
     if (!quiet)
       std::fprintf(stderr, "phellem: compare --lit: rendering %s (%d×%d px at %.2f px/cm, %d spp)\n", side.label.c_str(),
                    side.height.width - 2 * kLitMargin, side.height.height - 2 * kLitMargin, s, rig.spp);
-    return render_lit(side, rig, work, threads);
+    return render_lit(side, rig, threads);
   };
   const LitRender ra = render(sa), rb = render(sb);
   const LitStatistics st_a = lit_statistics(ra.image, a.source.path), st_b = lit_statistics(rb.image, b.source.path);

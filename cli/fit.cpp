@@ -14,6 +14,7 @@
 #include "compare/common_scale.h"
 #include "compare/compare_inputs.h"
 #include "compare/fit_objective.h"
+#include "lookdev/lit_objective.h"
 #include "compare/fit_parameters.h"
 #include "compare/fit_relief.h"
 #include "compare/fit_scene.h"
@@ -160,10 +161,22 @@ int run_fit(const cli::Options& o) {
   const double relief_budget = relief_stage && so.time_budget_s > 0 ? std::clamp(kReliefShare * so.time_budget_s, 5.0, 120.0) : 0.0;
   // The choice at the photo's scale (strips only: a stress patch at 1024², 10 px/cm takes
   // 20 s): about 1.5 s per simulation at 1024², 10 px/cm, two at a time.
-  const int choice_points = space.model == FitModel::strips ? kChoicePoints : 1;
+  // With a lit objective the search's winner is kept: the choice re-scores by height alone.
+  const int choice_points = space.model == FitModel::strips && o.objective == "height" ? kChoicePoints : 1;
   const double choice_budget = choice_points == 1 ? 0.0 : 0.8 * kChoicePoints * kFinalSeeds * double(final_size.width) * final_size.height / (1024.0 * 1024.0);
   if (so.time_budget_s > 0)
     so.time_budget_s = std::max(1.0, so.time_budget_s - since(t0) - 15.0 - relief_budget - choice_budget);
+  // --objective lit|both: the relief lit by the rig of `compare --lit`, the photo's rendered once
+  // at the evaluation scale (lookdev/lit_objective.h).
+  std::optional<LitObjective> lit;
+  if (o.objective != "height") {
+    HeightField photo_m = photo_eval;
+    for (float& z : photo_m.z) z = float(z * *o.relief);
+    std::optional<AlbedoField> albedo_eval;
+    if (photo_in.albedo) albedo_eval = at_scale(photo_in, s_eval).albedo;
+    if (!o.quiet) std::fprintf(stderr, "phellem: fit: lighting the photo's relief (%d×%d px)\n", photo_m.width, photo_m.height);
+    lit = make_lit_objective(photo_m, albedo_eval ? &*albedo_eval : nullptr, o.scene);
+  }
   const bool timed = so.max_evals == 0;
   Progress bar("fit", timed ? (long long)(so.time_budget_s * 10) : so.max_evals, !o.quiet);
   const auto search_start = Clock::now();
@@ -173,8 +186,21 @@ int run_fit(const cli::Options& o) {
       [&](const std::vector<double>& x, int replicate) {
         const FitCandidate cand = space.candidate(x);
         double f = 0;
-        for (int k = 0; k < kSeedsPerEvaluation; ++k)
-          f += score_candidate(cand, target.stats, eval_size, fit_simulation_seed(seed, replicate * kSeedsPerEvaluation + k)).f;
+        for (int k = 0; k < kSeedsPerEvaluation; ++k) {
+          const uint64_t sim_seed = fit_simulation_seed(seed, replicate * kSeedsPerEvaluation + k);
+          if (!lit) {
+            f += score_candidate(cand, target.stats, eval_size, sim_seed).f;
+            continue;
+          }
+          const std::optional<HeightField> field = try_simulate_candidate(cand, eval_size, sim_seed);
+          const FitScore height = field ? score_field(*field, target.stats) : FitScore{};
+          if (!height.valid) {  // refused by the model, or no relief at all: nothing to light
+            f += kFitPenalty;
+            continue;
+          }
+          const double lit_f = lit_objective_value(*lit, *field);
+          f += o.objective == "lit" ? lit_f : height.f + lit_f;
+        }
         return f / kSeedsPerEvaluation;
       },
       space.starts, so,
@@ -250,7 +276,18 @@ int run_fit(const cli::Options& o) {
   nlohmann::json params;
   const std::vector<double> values = space.values(x_best);
   for (size_t i = 0; i < space.table.size(); ++i) params[space.table[i].key] = values[i];
+  nlohmann::json lit_json = nullptr;
+  if (lit) {  // the winner at the evaluation scale, lit as the search saw it
+    LitComparison lc;
+    const std::optional<HeightField> field = try_simulate_candidate(best, eval_size, best_seed);
+    if (field) {
+      const double v = lit_objective_value(*lit, *field, &lc);
+      lit_json = {{"relief_m", *o.relief}, {"objective", v}, {"score", lc.score}, {"verdict", lc.verdict}, {"words", lc.words}};
+    }
+  }
   const nlohmann::json fit = {{"model", o.model},
+             {"objective_kind", o.objective},
+             {"lit", lit_json},
              {"seed", seed},
              {"evaluations", r.history.size()},
              {"seeds_per_evaluation", kSeedsPerEvaluation},

@@ -107,8 +107,10 @@ std::string usage() {
          "  phellem simulate SCENE.json -o DIR [--res WxH] [--seed S] [--stats STATS.json] [--no-mesh] [--threads N] [--quiet]\n"
          "  phellem compare A B [--scale A=PX_PER_CM] [--scale B=PX_PER_CM] [--albedo A=FILE] [-o REPORT.html]\n"
          "                 [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
+         "                 [--lit [--relief A=METRES] [--spp N] [--no-sky]] (docs/compare.md)\n"
          "  phellem fit HEIGHT_IMAGE --scale PX_PER_CM --model strips|stress -o DIR [--albedo IMAGE]\n"
-         "                 [--time-budget S] [--max-evals N] [--seed S] [--threads N] [--quiet]\n"
+         "                 [--objective height|lit|both [--relief METRES]] [--time-budget S] [--max-evals N]\n"
+         "                 [--seed S] [--threads N] [--quiet]\n"
          "  phellem slice SCENE.json -o SECTION.png [--object NAME] [--plane x|y|z=VALUE] [--res WxH] [--quiet]\n"
          "  phellem preview [SCENE.json] [--snapshot OUT.png [-o AOVS.exr]] [--res WxH] [--max-level N]\n"
          "                 [--edge-px P] [--frames N] [--quiet]\n"
@@ -217,7 +219,13 @@ Options parse(const std::vector<std::string>& args) {
     else if (a == "--model" && fit) {
       o.model = value();
       if (o.model != "strips" && o.model != "stress") bad(a, "unknown model \"" + o.model + "\"; allowed: strips, stress");
-    } else if (a == "--time-budget" && fit)
+    } else if (a == "--objective" && fit) {
+      o.objective = value();
+      if (o.objective != "height" && o.objective != "lit" && o.objective != "both")
+        bad(a, "unknown objective \"" + printable(o.objective) + "\"; allowed: height, lit, both");
+    } else if (a == "--relief" && fit)
+      o.relief = positive(a, value(), 10, "the photo's full height range in metres");
+    else if (a == "--time-budget" && fit)
       o.time_budget = positive(a, value(), 1e6, "a time in seconds");
     else if (a == "--max-evals" && fit)
       o.max_evals = integer(a, value(), 1, 1000000000);
@@ -241,6 +249,10 @@ Options parse(const std::vector<std::string>& args) {
     if (o.scene.empty()) bad("fit", "a height image is required");
     if (o.exr.empty()) bad("-o", "required for fit: the output folder");
     if (o.model.empty()) bad("--model", "required for fit: strips or stress");
+    if (o.objective != "height" && !o.relief)
+      bad("--relief", "required with --objective " + o.objective +
+                          ": the photo's full height range in metres (e.g. 0.02), so that its relief can be lit");
+    if (o.objective == "height" && o.relief) bad("--relief", "only with --objective lit or both (the height objective needs no relief)");
     if (o.spp || !o.png.empty() || !o.stats.empty() || o.width || o.memory_estimate)
       bad(o.spp ? "--spp" : !o.png.empty() ? "--png" : !o.stats.empty() ? "--stats" : o.width ? "--res" : "--memory-estimate",
           "not an option of fit");

@@ -25,6 +25,8 @@ struct Options {
   // fit: HEIGHT_IMAGE (in `scene`), --scale PX_PER_CM, --albedo IMAGE, --model, --time-budget S, --max-evals N.
   std::optional<double> scale, time_budget;
   std::string albedo, model;
+  std::string objective = "height";  // fit --objective height|lit|both
+  std::optional<double> relief;      // fit --relief METRES: the photo's full height range (lit objectives)
   std::optional<long long> max_evals;
   // preview: --snapshot OUT.png (in `png`), --max-level N, --edge-px P, --frames N (window: quit after N frames).
   std::optional<int> max_level;

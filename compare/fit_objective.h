@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "compare/compare_score.h"
@@ -27,6 +28,10 @@ struct FitScore {
 
 // `target`: the photo's statistics at `size`'s scale.
 FitScore score_candidate(const FitCandidate& c, const FissureStats& target, const PatchSize& size, uint64_t seed);
+// Its two halves: the candidate's patch (none when the model refuses the parameters), and a
+// patch's score against the target (invalid, kFitPenalty, when its relief is constant).
+std::optional<HeightField> try_simulate_candidate(const FitCandidate& c, const PatchSize& size, uint64_t seed);
+FitScore score_field(const HeightField& field, const FissureStats& target);
 
 // Degrees of orientation distance that weigh as much as 1 of score. Before the fit searched
 // the fissures' lean (spiral_deg), pine's 5° lean was out of reach and 30 was needed to hold

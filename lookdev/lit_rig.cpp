@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "io/image_file.h"
 #include "renderer/integrator.h"
@@ -13,7 +14,7 @@
 #include "scene/displacement_map.h"
 #include "util/errors.h"
 #include "util/hash.h"
-#include "util/temp_files.h"
+#include "util/cache_dir.h"
 
 namespace phellem {
 
@@ -23,9 +24,10 @@ namespace {
 // view a ray at the picture's edge leans 1° from the normal, so a 3 cm relief shifts by 0.5 mm.
 constexpr float kFovDeg = 2.0f;
 
-// The albedo as a float EXR (linear, three channels) that the texture system reads, named after
-// its content so that the texture cache converts a given albedo once.
-std::string write_albedo(const AlbedoField& a, const std::string& work_dir) {
+// The albedo as a float EXR (linear, three channels) for the texture system, kept in the
+// texture cache under a name made from its content: a given albedo is written and converted
+// once, and runs that render it at the same time write the same bytes (util/cache_dir.h).
+std::string albedo_texture(const AlbedoField& a, const std::string& label) {
   uint32_t h = hash_u32(uint32_t(a.width)) ^ hash_u32(uint32_t(a.height) * 7919u);
   for (float v : a.rgb) {
     uint32_t bits;
@@ -33,15 +35,21 @@ std::string write_albedo(const AlbedoField& a, const std::string& work_dir) {
     h = hash_combine(h, bits);
   }
   char name[64];
-  std::snprintf(name, sizeof name, "phellem-lit-albedo-%08x.exr", h);
-  const std::string path = (std::filesystem::path(work_dir) / name).string();
+  std::snprintf(name, sizeof name, "lit-albedo-%08x-%dx%d.exr", h, a.width, a.height);
   OIIO::ImageSpec spec(a.width, a.height, 3, OIIO::TypeDesc::FLOAT);
   spec.attribute("compression", "zip");
-  write_image_file(path, path, spec, OIIO::TypeDesc::FLOAT, a.rgb.data());
-  return path;
+  const std::vector<unsigned char> bytes = encode_image(name, spec, OIIO::TypeDesc::FLOAT, a.rgb.data());
+  return cache_entry_with_bytes(name, bytes, {label, "albedo"});
 }
 
-SceneDesc rig_scene(const LitSubject& s, const LitRig& rig, const std::string& albedo_file) {
+// The albedo's one colour when every pixel has it (no texture needed).
+std::optional<Color> uniform_colour(const AlbedoField& a) {
+  for (size_t p = 3; p < a.rgb.size(); ++p)
+    if (a.rgb[p] != a.rgb[p % 3]) return std::nullopt;
+  return Color(a.rgb[0], a.rgb[1], a.rgb[2]);
+}
+
+SceneDesc rig_scene(const LitSubject& s, const LitRig& rig, const std::string& albedo_file, const Color& base_colour) {
   const HeightField& f = s.height;
   const double metres_per_px = 0.01 / f.px_per_cm;
   const int w = f.width - 2 * kLitMargin, h = f.height - 2 * kLitMargin;
@@ -81,7 +89,7 @@ SceneDesc rig_scene(const LitSubject& s, const LitRig& rig, const std::string& a
   MaterialDesc bark;
   bark.name = "bark";
   bark.type = MaterialType::Bark;
-  bark.base_color = Color::Constant(albedo_file.empty() ? kLitDefaultAlbedo : 1.0f);
+  bark.base_color = albedo_file.empty() ? base_colour : Color::Ones();
   if (!albedo_file.empty()) {
     bark.base_color_texture.file = albedo_file;
     bark.base_color_texture.srgb = false;
@@ -118,25 +126,20 @@ SceneDesc rig_scene(const LitSubject& s, const LitRig& rig, const std::string& a
 
 }  // namespace
 
-LitRender render_lit(const LitSubject& s, const LitRig& rig, const std::string& work_dir, int threads) {
+LitRender render_lit(const LitSubject& s, const LitRig& rig, int threads) {
   const HeightField& f = s.height;
   if (f.width < 8 + 2 * kLitMargin || f.height < 8 + 2 * kLitMargin || !(f.px_per_cm > 0))
     throw UserError(s.label, "", "too small to light: " + std::to_string(f.width) + "×" + std::to_string(f.height) + " px");
   const auto t0 = std::chrono::steady_clock::now();
   std::string albedo_file;
-  LiveTempFile live;
+  Color base_colour = Color::Constant(kLitDefaultAlbedo);
   if (s.albedo) {
-    albedo_file = write_albedo(*s.albedo, work_dir);
-    live = LiveTempFile(albedo_file);
+    if (const std::optional<Color> one = uniform_colour(*s.albedo))
+      base_colour = *one;
+    else
+      albedo_file = albedo_texture(*s.albedo, s.label);
   }
-  struct Remove {
-    std::string path;
-    ~Remove() {
-      std::error_code ec;
-      if (!path.empty()) std::filesystem::remove(path, ec);
-    }
-  } remove{albedo_file};
-  const SceneDesc d = rig_scene(s, rig, albedo_file);
+  const SceneDesc d = rig_scene(s, rig, albedo_file, base_colour);
   const auto scene = build_render_scene(d, BarkResults{}, d.camera, d.render.width, d.render.height);
   RenderSettings rs;
   rs.spp = d.render.spp;

@@ -41,8 +41,9 @@ struct LitRender {
   double seconds = 0;
 };
 
-// Renders `subject` under the rig. `work_dir` holds the albedo as a texture while it renders
-// (removed after). Throws UserError when the subject is too small to frame.
-LitRender render_lit(const LitSubject& subject, const LitRig& rig, const std::string& work_dir, int threads = 0);
+// Renders `subject` under the rig (`threads` 0: all cores). An albedo of one colour is the
+// material's colour; any other is a texture kept in the texture cache under a name made from
+// its content (util/cache_dir.h). Throws UserError when the subject is too small to frame.
+LitRender render_lit(const LitSubject& subject, const LitRig& rig, int threads = 0);
 
 }  // namespace phellem

@@ -183,3 +183,41 @@ TEST(FitCli, AlbedoColoursTheFittedScene) {
 }
 
 }  // namespace phellem
+
+namespace phellem {
+namespace {
+
+// --objective lit|both (issue 44): the relief is lit by compare --lit's rig; the photo's relief
+// must be given in metres, and the report says which objective ran and how the winner lights.
+TEST(FitCli, LitObjectiveMistakes) {
+  const std::string d = test::temp_dir("fit_cli_lit_args");
+  const std::string fit = "fit " + grooves_png(d) + " --scale 10 --model strips -o " + d + "/out";
+  expect_error(fit + " --objective lit", "<command line>: --relief: required with --objective lit");
+  expect_error(fit + " --objective both", "<command line>: --relief: required with --objective both");
+  expect_error(fit + " --relief 0.02", "<command line>: --relief: only with --objective lit or both");
+  expect_error(fit + " --objective shade --relief 0.02", "<command line>: --objective: unknown objective \"shade\"");
+  for (const char* bad : {"0", "-0.01", "nan", "11"})
+    expect_error(fit + " --objective lit --relief " + std::string(bad), "<command line>: --relief: ");
+  EXPECT_FALSE(std::filesystem::exists(d + "/out"));
+}
+
+TEST(FitCli, LitObjectiveSearchesAndReportsTheLitScore) {
+  const std::string d = test::temp_dir("fit_cli_lit_run");
+  const auto r = test::run_phellem("fit " + grooves_png(d) + " --scale 10 --model strips -o " + d +
+                                   "/out --objective both --relief 0.01 --max-evals 4 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto report = nlohmann::json::parse(test::read_text(d + "/out/report.json"));
+  const auto& fit = report["fit"];
+  EXPECT_EQ(fit["objective_kind"], "both");
+  ASSERT_TRUE(fit["lit"].is_object()) << fit.dump(1);
+  const double lit = fit["lit"]["objective"].get<double>();
+  EXPECT_GT(lit, 0.0);
+  EXPECT_LE(lit, 1.0);
+  // "both" adds the lit objective to the height objective: the search's best is at least the lit part.
+  EXPECT_GE(fit["objective"]["min"].get<double>(), 0.0);
+  EXPECT_TRUE(fit["lit"]["verdict"].is_string());
+  EXPECT_DOUBLE_EQ(fit["lit"]["relief_m"].get<double>(), 0.01);
+}
+
+}  // namespace
+}  // namespace phellem

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "compare/lit_score.h"
 #include "lookdev/lit_rig.h"
@@ -16,7 +15,6 @@
 namespace phellem {
 namespace {
 
-std::string work_dir() { return std::filesystem::temp_directory_path().string(); }
 
 bool has(const std::vector<std::string>& words, const std::string& w) { return std::find(words.begin(), words.end(), w) != words.end(); }
 std::string joined(const std::vector<std::string>& words) {
@@ -59,14 +57,14 @@ TEST(LitRig, NearBlackShareOfVGroovesMatchesTheClosedForm) {
   EXPECT_NEAR(v_groove_share(30, period, h, d, s), (1.26795 * 10 - 0.94) / 40, 1e-5);  // ξ* = 0.268 cm at 30°
   for (const double e : {30.0, 20.0}) {
     rig.sun_elevation_deg = e;
-    const LitStatistics st = lit_statistics(render_lit(sub, rig, work_dir()).image, "grooves");
+    const LitStatistics st = lit_statistics(render_lit(sub, rig).image, "grooves");
     // Measured 0.2954 (30°, form 0.2935) and 0.3502 (20°, form 0.3431): within 0.3 px per groove, the
     // dicing's rounding of the rims; the form without its pixel term (0.317 at 30°) is outside.
     EXPECT_NEAR(st.near_black_share, v_groove_share(e, period, h, d, s), 0.01) << "sun at " << e << "°";
   }
   // A sun steeper than the walls (d < h·tan 60°) lights both walls: nothing is near-black.
   rig.sun_elevation_deg = 60;
-  EXPECT_LT(lit_statistics(render_lit(sub, rig, work_dir()).image, "grooves").near_black_share, 0.005);
+  EXPECT_LT(lit_statistics(render_lit(sub, rig).image, "grooves").near_black_share, 0.005);
 }
 
 // Synthetic fissured bark with an albedo that follows the height (dark in the fissures) and a slow
@@ -101,7 +99,7 @@ class LitCalibration : public ::testing::Test {
     r.spp = 8;
     return r;
   }
-  static LitStatistics measure(const LitSubject& s) { return lit_statistics(render_lit(s, rig(), work_dir()).image, s.label); }
+  static LitStatistics measure(const LitSubject& s) { return lit_statistics(render_lit(s, rig()).image, s.label); }
   static void SetUpTestSuite() {
     bark_ = new LitSubject(synthetic_bark(3));
     reference_ = new LitStatistics(measure(*bark_));
