@@ -45,10 +45,19 @@ struct CompareOptions {
 constexpr double kAnalysisBytesPerPixel = 110;
 
 // Refuses the comparison before the statistics run when their working images would not fit.
-void check_compare_memory(const LoadedInput& a, const LoadedInput& b, const std::string& memory_limit) {
+// compare --lit renders each side, one after the other, at one pixel per pixel: the diced patch
+// (about 2 triangles a pixel at 129 bytes each with the BVH, scene/memory_estimate.cpp), the film
+// (72 bytes) and the lit statistics' working images (about 110 bytes) for the side being
+// rendered, and the film and picture (84 bytes) of the side already done.
+constexpr double kLitRenderBytesPerPixel = 2 * 129 + 72 + 110;
+constexpr double kLitKeptBytesPerPixel = 84;
+
+void check_compare_memory(const LoadedInput& a, const LoadedInput& b, const std::string& memory_limit, bool lit) {
   const double s = common_scale(a, b);
   MemoryMoment m;
-  m.stage = "comparing";
+  m.stage = lit ? "comparing under light" : "comparing";
+  double kept = 0, largest_render = 0;
+  const LoadedInput* largest = &a;
   for (const LoadedInput* in : {&a, &b}) {
     const double w = in->image.width * s / in->px_per_cm_x, h = in->image.height * s / in->px_per_cm_y;
     const double source = double(in->image.z.size()) * 4 + (in->albedo ? double(in->albedo->rgb.size()) * 4 : 0.0);
@@ -56,7 +65,13 @@ void check_compare_memory(const LoadedInput& a, const LoadedInput& b, const std:
                            " px at " + std::to_string(s).substr(0, 5) + " px/cm) and its image",
                        w * h * kAnalysisBytesPerPixel * (in->albedo ? 1.1 : 1.0) + source, in->source.path,
                        "--scale " + in->source.label, "measure a smaller crop of the image"});
+    kept += w * h * kLitKeptBytesPerPixel;
+    if (w * h * kLitRenderBytesPerPixel > largest_render) largest_render = w * h * kLitRenderBytesPerPixel, largest = in;
   }
+  if (lit)
+    m.items.push_back({"rendering the larger side (" + largest->source.label + ") under the light rig, and both pictures",
+                       largest_render + kept, largest->source.path, "--scale " + largest->source.label,
+                       "light a smaller crop of the image"});
   MemoryEstimate e;
   e.moments.push_back(m);
   check_memory(e, memory_budget(memory_limit));
@@ -223,7 +238,7 @@ int run_compare(const std::vector<std::string>& args) {
   if (!o.b.albedo_path.empty()) out.expect_input("--albedo B", o.b.albedo_path);
   const LoadedInput a = load_input(o.a, o.render_a);
   const LoadedInput b = load_input(o.b, o.render_b);
-  check_compare_memory(a, b, o.memory_limit);
+  check_compare_memory(a, b, o.memory_limit, o.lit.on);
   if (o.lit.on) return run_compare_lit(a, b, o.lit, out, o.html, o.json, o.quiet, o.threads.value_or(0));
   const CompareReport report = compare_inputs(a, b);
   if (!o.html.empty())

@@ -6,9 +6,9 @@
 #include <numbers>
 #include <sstream>
 
+#include "compare/html_text.h"
 #include "compare/report_images.h"
 #include "compare/statistic_names.h"
-#include "util/base64.h"
 
 namespace phellem {
 
@@ -17,31 +17,10 @@ namespace {
 constexpr const char* kColourA = "#2f6db5";  // input A in every chart
 constexpr const char* kColourB = "#d9822b";  // input B
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-std::string fixed(double v, int digits) {
-  if (!std::isfinite(v)) return "—";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-std::string img(const std::vector<unsigned char>& png, const std::string& alt) {
-  return "<img alt=\"" + escape(alt) + "\" src=\"data:image/png;base64," + base64(png.data(), png.size()) + "\">";
-}
+// The shared pieces (compare/html_text.h) under this file's short names.
+std::string escape(const std::string& text) { return html_escape(text); }
+std::string fixed(double v, int digits) { return html_fixed(v, digits); }
+std::string img(const std::vector<unsigned char>& png, const std::string& alt) { return html_img(png, alt); }
 
 // Orientation rose: one wedge per 10° bin, mirrored (a fissure direction is an axis), radius
 // ∝ √share so that wedge area reads as share of fissure length. 90° points up.

@@ -141,11 +141,7 @@ LitRender render_lit(const LitSubject& s, const LitRig& rig, int threads) {
   }
   const SceneDesc d = rig_scene(s, rig, albedo_file, base_colour);
   const auto scene = build_render_scene(d, BarkResults{}, d.camera, d.render.width, d.render.height);
-  RenderSettings rs;
-  rs.spp = d.render.spp;
-  rs.max_depth = d.render.max_depth;
-  rs.seed = d.render.seed;
-  rs.filter = d.render.filter;
+  RenderSettings rs = render_settings(d.render);
   rs.threads = threads;
   RenderResult r = render_image(*scene, Camera(d.camera, d.render.width, d.render.height), d.render.width, d.render.height, rs);
 

@@ -164,6 +164,15 @@ Color trace_path(const RenderScene& scene, Ray ray, Sampler& sampler, int max_de
 
 }  // namespace
 
+RenderSettings render_settings(const RenderDesc& r) {
+  RenderSettings s;
+  s.spp = r.spp;
+  s.max_depth = r.max_depth;
+  s.seed = r.seed;
+  s.filter = r.filter;
+  return s;
+}
+
 RenderResult render_image(const RenderScene& scene, const Camera& camera, int width, int height, const RenderSettings& s) {
   RenderResult result;
   result.film = Film(width, height);

@@ -18,6 +18,9 @@ struct RenderSettings {
   std::string progress_label = "render";
 };
 
+// A scene's render settings (spp, max_depth, seed, filter) on all cores, no progress.
+RenderSettings render_settings(const RenderDesc& r);
+
 struct RenderResult {
   Film film;
   long long rays = 0;             // camera + bounce + shadow rays traced

@@ -8,11 +8,7 @@ namespace phellem::test {
 RenderResult render_json(const std::string& json, int threads, const std::string& base_dir) {
   const SceneDesc d = parse_scene(json, "<test>", base_dir);
   const auto scene = build_render_scene(d, d.camera, d.render.width, d.render.height);
-  RenderSettings s;
-  s.spp = d.render.spp;
-  s.max_depth = d.render.max_depth;
-  s.seed = d.render.seed;
-  s.filter = d.render.filter;
+  RenderSettings s = render_settings(d.render);
   s.threads = threads;
   return render_image(*scene, Camera(d.camera, d.render.width, d.render.height), d.render.width, d.render.height, s);
 }
