@@ -154,6 +154,8 @@ CompareOptions parse(const std::vector<std::string>& args) {
       o.lit.on = true;
     } else if (a == "--no-sky") {
       o.lit.no_sky = true;
+    } else if (a == "--lights") {
+      o.lit.lights = value();
     } else if (a == "--spp") {
       const std::string v = value();
       char* end = nullptr;
@@ -184,9 +186,10 @@ CompareOptions parse(const std::vector<std::string>& args) {
     }
   }
   if (!o.lit.on)
-    for (const char* lit_only : {"--relief A", "--relief B", "--spp"})
+    for (const char* lit_only : {"--relief A", "--relief B", "--spp", "--lights"})
       if (given.count(lit_only)) bad(lit_only, "is an option of the lit comparison: add --lit");
   if (!o.lit.on && o.lit.no_sky) bad("--no-sky", "is an option of the lit comparison: add --lit");
+  if (o.lit.no_sky && !o.lit.lights.empty()) bad("--no-sky", "takes the rig's sky away; with --lights the scene's lights are used as they are");
   if (files.size() != 2)
     bad("compare", "expected two inputs A and B, got " + std::to_string(files.size()) + "\n" + compare_usage());
   o.a.path = files[0];
@@ -214,14 +217,15 @@ std::string compare_usage() {
   return "usage: phellem compare A B [--scale A=PX_PER_CM] [--scale B=PX_PER_CM] [--albedo A=FILE] [--albedo B=FILE]\n"
          "                      [--object A=ID] [--facing-deg A=DEG] (and B=)\n"
          "                      [-o REPORT.html] [--json OUT.json] [--threads N] [--memory-limit SIZE] [--quiet]\n"
-         "                      [--lit [--relief A=METRES] [--relief B=METRES] [--spp N] [--no-sky]]\n"
+         "                      [--lit [--relief A=METRES] [--relief B=METRES] [--spp N] [--no-sky | --lights SCENE.json]]\n"
          "  A and B: a height map (8/16-bit PNG, JPEG, TIFF, EXR; white = high; not a colour photo: give that\n"
          "  as --albedo), a FractureField EXR from `phellem simulate`, a render EXR (its displacement over the\n"
          "  largest rectangle of one object's pixels facing the camera within --facing-deg, default 30; the\n"
          "  object covering most pixels unless --object), or a patch.exr from `phellem fit`.\n"
          "  --scale is required for plain images (a render's comes from its positions); see docs/compare.md.\n"
          "  --lit renders both as flat patches under one light rig (a raking 0.53° sun at 30°, a sky) and compares\n"
-         "  the pictures (A: the reference, B: the candidate); --relief gives a plain image's height range in metres.\n";
+         "  the pictures (A: the reference, B: the candidate); --relief gives a plain image's height range in metres;\n"
+         "  --lights takes a scene's lights instead, the patch facing that scene's camera.\n";
 }
 
 int run_compare(const std::vector<std::string>& args) {

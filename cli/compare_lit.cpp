@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "lookdev/lit_rig.h"
+#include "scene/scene_parser.h"
 #include "cli/outputs.h"
 #include "compare/lit_report_html.h"
 #include "compare/lit_report_json.h"
@@ -57,6 +58,16 @@ int run_compare_lit(const LoadedInput& a, const LoadedInput& b, const LitOptions
   LitRig rig;
   rig.spp = lit.spp;
   rig.sky = !lit.no_sky;
+  if (!lit.lights.empty()) {
+    out.expect_input("--lights", lit.lights);
+    const SceneDesc scene = load_scene_file(lit.lights);
+    for (const std::string& f : scene.files) out.expect_input("--lights", f);
+    if (scene.lights.empty())
+      throw UserError(lit.lights, "/lights", "the scene has no lights to light the comparison with (the rig's own: leave out --lights)");
+    rig.lights = scene.lights;
+    rig.facing = (scene.camera.position - scene.camera.look_at).normalized();
+    rig.up = scene.camera.up;
+  }
   auto render = [&](const LitSubject& side) {
     if (!quiet)
       std::fprintf(stderr, "phellem: compare --lit: rendering %s (%d×%d px at %.2f px/cm, %d spp)\n", side.label.c_str(),
@@ -66,18 +77,24 @@ int run_compare_lit(const LoadedInput& a, const LoadedInput& b, const LitOptions
   const LitRender ra = render(sa), rb = render(sb);
   const LitStatistics st_a = lit_statistics(ra.image, a.source.path), st_b = lit_statistics(rb.image, b.source.path);
   const LitComparison c = compare_lit(st_a, st_b);
-  char rig_text[256];
-  std::snprintf(rig_text, sizeof rig_text,
-                "Light rig: a flat patch seen straight on; a 0.53° sun at %.0f° elevation raking across the fissures "
-                "(from the right)%s; %d samples per pixel.",
-                rig.sun_elevation_deg, rig.sky ? " and a Preetham sky" : ", no sky", rig.spp);
+  char rig_text[512];
+  if (rig.lights.empty())
+    std::snprintf(rig_text, sizeof rig_text,
+                  "Light rig: a flat patch seen straight on; a 0.53° sun at %.0f° elevation raking across the fissures "
+                  "(from the right)%s; %d samples per pixel.",
+                  rig.sun_elevation_deg, rig.sky ? " and a Preetham sky" : ", no sky", rig.spp);
+  else
+    std::snprintf(rig_text, sizeof rig_text,
+                  "Lights of %s: a flat patch facing that scene's camera, seen straight on, under the scene's %zu light(s); "
+                  "%d samples per pixel.",
+                  lit.lights.c_str(), rig.lights.size(), rig.spp);
   if (!html.empty()) {
     const LitReportSide ref{"A", a.source.path, note_a, &ra.image, &st_a}, cand{"B", b.source.path, note_b, &rb.image, &st_b};
     out.write_bytes("-o", html, lit_report_html(ref, cand, c, rig_text));
   }
   if (!json.empty()) {
     nlohmann::json j = lit_comparison_json(st_a, st_b, c);
-    j["rig"] = {{"text", rig_text},          {"sun_elevation_deg", rig.sun_elevation_deg}, {"sky", rig.sky},
+    j["rig"] = {{"text", rig_text},          {"sun_elevation_deg", rig.sun_elevation_deg}, {"sky", rig.sky}, {"lights", lit.lights},
                 {"spp", rig.spp},            {"px_per_cm", s},
                 {"render_seconds", {ra.seconds, rb.seconds}}};
     j["inputs"] = {{"A", {{"path", a.source.path}, {"note", note_a}, {"width", ra.image.width}, {"height", ra.image.height}}},

@@ -18,6 +18,7 @@ struct LitOptions {
   std::optional<double> relief_a, relief_b;
   int spp = 16;
   bool no_sky = false;  // --no-sky: the sun alone
+  std::string lights;   // --lights SCENE.json: that scene's lights, the patch facing its camera
 };
 
 inline constexpr int kMaxLitSpp = 4096;

@@ -64,20 +64,27 @@ SceneDesc rig_scene(const LitSubject& s, const LitRig& rig, const std::string& a
   d.render.filter.radius = 0.5f;
   const float half_height = float(0.5 * h * metres_per_px);
   const float distance = half_height / std::tan(radians(kFovDeg) * 0.5f);
-  d.camera.position = Vec3f(0, 0, distance);
+  const Vec3f n = rig.facing.normalized();
+  const Vec3f up_hint = std::abs(rig.up.normalized().dot(n)) < 0.999f ? rig.up : Frame(n).t;  // a camera looking straight down
+  const Vec3f up = (up_hint - up_hint.dot(n) * n).normalized(), right = up.cross(n);
+  d.camera.position = n * distance;
   d.camera.look_at = Vec3f(0, 0, 0);
-  d.camera.up = Vec3f(0, 1, 0);
+  d.camera.up = up;
   d.camera.fov_deg = kFovDeg;
 
   const double e = rig.sun_elevation_deg * M_PI / 180.0;
   LightDesc sun;
   sun.type = LightType::Sun;
-  sun.direction = Vec3f(float(std::cos(e)), 0.0f, float(std::sin(e)));
+  sun.direction = float(std::cos(e)) * right + float(std::sin(e)) * n;  // from the patch's right, across the fissures
   sun.has_direction = true;
   sun.irradiance = float(rig.sun_irradiance);
   sun.angle_deg = 0.53f;
-  d.lights.push_back(sun);
-  if (rig.sky) {
+  if (!rig.lights.empty()) {
+    d.lights = rig.lights;
+  } else {
+    d.lights.push_back(sun);
+  }
+  if (rig.lights.empty() && rig.sky) {
     LightDesc sky;
     sky.type = LightType::Sky;
     sky.direction = sun.direction;
@@ -112,8 +119,8 @@ SceneDesc rig_scene(const LitSubject& s, const LitRig& rig, const std::string& a
   patch.material = "bark";
   patch.where = {d.file, "/objects/0"};
   patch.point = Vec3f::Zero();
-  patch.normal = Vec3f(0, 0, 1);
-  patch.up = Vec3f(0, 1, 0);
+  patch.normal = n;
+  patch.up = up;
   patch.size = Vec2f(float(f.width * metres_per_px), float(f.height * metres_per_px));
   patch.displacement.type = DisplacementDesc::Type::Image;
   patch.displacement.map = map;

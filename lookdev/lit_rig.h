@@ -8,10 +8,12 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "compare/height_field.h"
 #include "compare/lit_statistics.h"
 #include "io/film.h"
+#include "scene/scene_desc.h"
 
 namespace phellem {
 
@@ -19,6 +21,11 @@ struct LitRig {
   double sun_elevation_deg = 30;  // above the patch's plane
   double sun_irradiance = 3;      // on a surface facing the sun (the sky takes the same scale)
   bool sky = true;                // false: the sun alone (closed-form tests)
+  // A scene's own lights instead of the sun and sky (`compare --lit --lights SCENE`), with the
+  // patch turned to face that scene's camera: `facing` is the patch's normal and `up` its v
+  // direction, in the lights' world frame.
+  std::vector<LightDesc> lights;
+  Vec3f facing{0, 0, 1}, up{0, 1, 0};
   int spp = 16;
   int max_depth = 4;
   uint64_t seed = 1;

@@ -112,3 +112,35 @@ TEST(CompareLitCli, ReportShowsRendersAtTheirTrueRelativeSize) {
 
 }  // namespace
 }  // namespace phellem
+
+namespace phellem {
+namespace {
+
+// --lights SCENE: the scene's own lights, the patch facing the scene's camera. A sun straight
+// along the camera's axis casts no shadow the camera sees, so the darkest pixels are far less
+// dark than under the rig's raking sun; a scene without lights, or with --no-sky, is refused.
+TEST(CompareLitCli, TheScenesOwnLightsAndCamera) {
+  const auto& in = inputs();
+  const std::string head_on = in.dir + "/head_on.json", dark = in.dir + "/dark.json";
+  test::write_text(head_on, R"({"camera": {"position": [3, 1, 0], "look_at": [0, 1, 0]},
+    "lights": [{"type": "sun", "direction": [1, 0, 0], "irradiance": 3}]})");
+  test::write_text(dark, R"({"camera": {"position": [0, 1, 3], "look_at": [0, 1, 0]}, "lights": []})");
+  const auto rig = lit_json(in.a, in.a, "rig");
+  const auto scene = lit_json(in.a, in.a, "scene", " --lights " + head_on);
+  ASSERT_TRUE(rig.is_object() && scene.is_object());
+  EXPECT_EQ(scene["rig"]["lights"], head_on);
+  // P1 of ln Y − ln median: the darkest shadows, relative to the median.
+  const double raking = rig["reference"]["statistics"]["log_luminance_p01"].get<double>();
+  const double straight = scene["reference"]["statistics"]["log_luminance_p01"].get<double>();
+  EXPECT_LT(raking, -0.5);
+  EXPECT_GT(straight, 0.5 * raking) << "raking " << raking << ", straight " << straight;
+  auto r = test::run_phellem("compare --lit " + in.a + " " + in.b + " --scale A=4 --scale B=4" + kRelief + " --lights " + dark);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("phellem: error: " + dark + ": /lights: the scene has no lights"), std::string::npos) << r.output;
+  r = test::run_phellem("compare --lit " + in.a + " " + in.b + " --scale A=4 --scale B=4" + kRelief + " --lights " + head_on +
+                        " --no-sky");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+}  // namespace
+}  // namespace phellem

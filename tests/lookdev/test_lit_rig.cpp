@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compare/compare_inputs.h"
 #include "compare/lit_score.h"
 #include "lookdev/lit_rig.h"
 #include "lookdev/lit_variants.h"
@@ -146,6 +147,62 @@ TEST_F(LitCalibration, BlackFissureFloorsAreTooDark) {
   EXPECT_NE(c.verdict, "same look") << c.score;
   EXPECT_TRUE(has(c.words, "fissures too dark")) << joined(c.words);
   EXPECT_FALSE(has(c.words, "fissures too light"));
+}
+
+}  // namespace
+}  // namespace phellem
+
+namespace phellem {
+namespace {
+
+// The calibration cases on the two CC0 scans the repository carries (data/photos, from
+// ../shared/reference), at 4 px/cm and 4 spp to stay quick; bench/lit_calibration.cpp runs them
+// at 5 and 10 px/cm, 16 spp (docs/compare.md).
+class LitScans : public ::testing::Test {
+ protected:
+  static LitSubject scan(const std::string& height, const std::string& albedo, const std::string& label) {
+    const std::string dir = std::string(PHELLEM_SOURCE_DIR) + "/data/photos/";
+    const PreparedInput in = at_scale(load_input(CompareSource{label, dir + height, 10.0, dir + albedo}), 4.0);
+    LitSubject s;
+    s.label = label;
+    s.height = in.field;
+    for (float& z : s.height.z) z *= 0.03f;  // the full code range as 3 cm
+    s.albedo = in.albedo;
+    return s;
+  }
+  static LitStatistics measure(const LitSubject& s) {
+    LitRig r;
+    r.spp = 4;
+    return lit_statistics(render_lit(s, r).image, s.label);
+  }
+};
+
+TEST_F(LitScans, HalvesLookTheSameDefectsAreNamedAndTheTwoScansDiffer) {
+  const LitSubject brown = scan("bark_brown_01_polyhaven_disp.jpg", "bark_brown_01_polyhaven.jpg", "brown");
+  const LitSubject pine = scan("pine_bark_polyhaven_disp.png", "pine_bark_polyhaven.jpg", "pine");
+  LitStatistics full[2];
+  int k = 0;
+  for (const LitSubject* s : {&brown, &pine}) {
+    SCOPED_TRACE(s->label);
+    full[k] = measure(*s);
+    for (bool vertical : {true, false}) {
+      const LitComparison c = compare_lit(measure(half_of(*s, vertical, false)), measure(half_of(*s, vertical, true)));
+      EXPECT_EQ(c.verdict, "same look") << (vertical ? "left/right " : "top/bottom ") << c.score;
+      EXPECT_TRUE(c.words.empty()) << joined(c.words);
+    }
+    const LitComparison relief = compare_lit(full[k], measure(with_relief_scaled(*s, 3.0)));
+    EXPECT_EQ(relief.verdict, "different") << relief.score;
+    EXPECT_TRUE(has(relief.words, "relief too strong")) << joined(relief.words);
+    const LitComparison flat = compare_lit(full[k], measure(with_mean_albedo(*s)));
+    EXPECT_NE(flat.verdict, "same look") << flat.score;
+    EXPECT_TRUE(has(flat.words, "colour too uniform")) << joined(flat.words);
+    const LitComparison black = compare_lit(full[k], measure(with_black_fissure_floors(*s)));
+    EXPECT_EQ(black.verdict, "different") << black.score;
+    EXPECT_TRUE(has(black.words, "fissures too dark")) << joined(black.words);
+    ++k;
+  }
+  const LitComparison c = compare_lit(full[0], full[1]);
+  EXPECT_EQ(c.verdict, "different") << c.score;
 }
 
 }  // namespace
