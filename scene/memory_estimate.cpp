@@ -17,6 +17,7 @@
 #include "bark/strips/strip_model.h"
 #include "scene/dicing_params.h"
 #include "scene/displacement.h"
+#include "scene/displacement_map.h"
 #include "scene/object_meshes.h"
 #include "scene/mesh_source.h"
 #include "scene/tree_surface.h"
@@ -575,6 +576,15 @@ MemoryEstimate estimate_memory(const SceneDesc& desc, const MemoryRequest& req) 
     last.items.push_back(scratch);
   }
   last.items.push_back(geometry_item(desc, req.height, stress_triangles));
+  // Image displacement maps, held as floats from the scene's reading to the end of the dicing.
+  for (const ObjectDesc& o : desc.objects) {
+    const DisplacementMap* map = o.displacement.map.get();
+    if (o.displacement.type != DisplacementDesc::Type::Image || !map) continue;
+    last.items.push_back({"the displacement map " + o.displacement.file + " (" + std::to_string(map->width) + "×" +
+                              std::to_string(map->height) + " px)",
+                          double(map->value.size()) * sizeof(float), desc.file, o.where.path + "/displacement/file",
+                          "use a smaller map"});
+  }
   last.items.push_back(req.film);
   e.moments.push_back(std::move(last));
   return e;

@@ -252,8 +252,9 @@ TEST(CompareCli, RenderOptionMistakes) {
 // The Poly Haven photos in ../shared/reference (outside the repository: skipped where absent):
 // the colour photos are refused as height maps, naming --albedo; their scans are measured.
 TEST(CompareCli, AColourPhotoIsNoHeightMap) {
-  const std::string photos = std::string(PHELLEM_SOURCE_DIR) + "/../shared/reference/photos";
-  if (!std::ifstream(photos + "/pine_bark_polyhaven.jpg")) GTEST_SKIP() << "no reference photos in " << photos;
+  // The CC0 scans the repository carries (data/photos, copies of ../shared/reference/photos).
+  const std::string photos = std::string(PHELLEM_SOURCE_DIR) + "/data/photos";
+  ASSERT_TRUE(std::ifstream(photos + "/pine_bark_polyhaven.jpg")) << "no scans in " << photos;
   const std::string brown = photos + "/bark_brown_01_polyhaven", pine = photos + "/pine_bark_polyhaven";
   for (const std::string& photo : {brown + ".jpg", pine + ".jpg"}) {
     const auto r = test::run_phellem("compare " + photo + " " + brown + "_disp.jpg --scale A=10 --scale B=10");
