@@ -5,16 +5,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <optional>
 
 #include "io/image_file.h"
 #include "renderer/integrator.h"
 #include "renderer/render_scene.h"
 #include "scene/displacement_map.h"
+#include "util/cache_dir.h"
 #include "util/errors.h"
 #include "util/hash.h"
-#include "util/cache_dir.h"
 
 namespace phellem {
 
