@@ -299,7 +299,11 @@ PreviewScene build_preview_scene(const SceneDesc& desc, const BarkResults& bark)
         made.push_back(from_mesh(plane_mesh(o)));
         break;
       case ObjectType::Patch:
-        made.push_back(from_mesh(patch_mesh(o, 16, 16)));
+        // Cells about kPatchSize across, as a tree part's: the tessellator refines each, and
+        // llvmpipe drops primitives of patches tessellated past a level of about 20 (a 1 m
+        // patch of 16 × 16 cells at 2 px a micro-edge lost whole bands of cells).
+        made.push_back(from_mesh(patch_mesh(o, std::clamp(int(std::ceil(o.size.x() / kPatchSize)), 1, 512),
+                                            std::clamp(int(std::ceil(o.size.y() / kPatchSize)), 1, 512))));
         if (image) add_image_displacement(made.back(), o.displacement);
         break;
       case ObjectType::Tree:

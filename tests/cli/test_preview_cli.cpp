@@ -147,6 +147,44 @@ TEST(PreviewCli, APatchWithAnImageDisplacementShowsItsRelief) {
   EXPECT_GT(bumpy.spread, 5 * flat.spread + 5);
 }
 
+// A metre-wide patch with an image displacement, seen whole at 512²: drawn as 16 × 16 cells,
+// each tessellated to level ~24 at 2 px a micro-edge, llvmpipe dropped whole bands of cells
+// (the background showed through) and took 1.3 s a frame; in cells of 2 cm it is drawn whole.
+// Every pixel inside the patch's outline must be the patch's (the depth AOV is finite and
+// positive only where a surface is).
+TEST(PreviewCli, AMetreWidePatchIsDrawnWhole) {
+  const std::string dir = test::temp_dir("preview_big_patch");
+  {
+    const std::vector<float> flat(64, 0.5f);
+    auto out = OIIO::ImageOutput::create(dir + "/flat.exr");
+    ASSERT_TRUE(out && out->open(dir + "/flat.exr", OIIO::ImageSpec(8, 8, 1, OIIO::TypeDesc::FLOAT)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, flat.data()));
+    out->close();
+  }
+  const std::string scene = dir + "/scene.json";
+  test::write_text(scene, R"({"camera": {"position": [0, 0, 2.2], "look_at": [0, 0, 0], "fov_deg": 30},
+    "lights": [{"type": "environment", "file": "builtin:rooitou_park_1k.hdr"}, {"type": "sun", "direction": [0.87, 0, 0.5], "irradiance": 3}],
+    "objects": [{"type": "patch", "size": 1.024, "displacement": {"type": "image", "file": "flat.exr", "scale": 0.03}}]})");
+  const auto r = test::run_phellem("preview " + scene + " --snapshot " + dir + "/s.png -o " + dir + "/s.exr --res 512x512 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto exr = OIIO::ImageInput::open(dir + "/s.exr");
+  ASSERT_TRUE(exr);
+  const OIIO::ImageSpec& spec = exr->spec();
+  const int depth_channel = spec.channelindex("depth.Z");
+  ASSERT_GE(depth_channel, 0);
+  std::vector<float> depth(size_t(spec.width) * size_t(spec.height));
+  ASSERT_TRUE(exr->read_image(0, 0, depth_channel, depth_channel + 1, OIIO::TypeDesc::FLOAT, depth.data()));
+  // The patch spans ±0.512 m at 2.2 m under a 30° field of view: ±0.8686 of the half-frame,
+  // pixels 34 to 478; inside it by 4 px, no pixel may show the background.
+  int background = 0;
+  for (int y = 38; y < 474; ++y)
+    for (int x = 38; x < 474; ++x) {
+      const float d = depth[size_t(y) * size_t(spec.width) + size_t(x)];
+      background += !(std::isfinite(d) && d > 0.0f);
+    }
+  EXPECT_EQ(background, 0);
+}
+
 TEST(PreviewCli, MistakesAreExit2WithTheirReason) {
   const std::string dir = test::temp_dir("preview_errors");
   const std::string scene = scene_file(dir);
