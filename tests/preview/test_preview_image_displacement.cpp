@@ -168,12 +168,18 @@ INSTANTIATE_TEST_SUITE_P(Maps, PatchImageDisplacement, ::testing::Values(0, 1, 2
 
 namespace {
 
-// Each part of a tree (object k of the preview scene is part k) against the C++ offset at the
-// same (u, v): `cpp_offset(k, u, v)`; the base point is the preview's own (curved patches
-// through the grid), so the offset along its normal is compared.
-template <class Offset>
-Deviation compare_tree_parts(const PreviewScene& scene, const CameraModel& camera, const Offset& cpp_offset,
-                             const Offset& wrong_offset) {
+// The offset of part k of `parts` at (u, v), as the dicer evaluates it.
+float part_offset(const std::vector<TreePart>& parts, size_t k, float u, float v) {
+  float offset = 0;
+  parts[k].surface.position(u, v, &offset);
+  return offset;
+}
+
+// Each part of a tree (object k of the preview scene is part k) against the C++ surface's
+// offset at the same (u, v), and against a deliberately wrong one; the base point is the
+// preview's own (curved patches through the grid), so the offset along its normal is compared.
+Deviation compare_tree_parts(const PreviewScene& scene, const CameraModel& camera, const std::vector<TreePart>& parts,
+                             const std::vector<TreePart>& wrong_parts) {
   PreviewRenderer renderer(scene);
   PreviewSettings s = fine();
   s.cull = false;  // every patch, the far side too
@@ -184,9 +190,10 @@ Deviation compare_tree_parts(const PreviewScene& scene, const CameraModel& camer
     for (size_t i = 0; i < fb.base.size(); ++i) {
       const Vec3f n = fb.normal[i].normalized();
       const Vec2f uv = fb.param[i];
-      const Vec3f expected = fb.base[i] + cpp_offset(k, uv.x(), uv.y()) * n;
+      const Vec3f expected = fb.base[i] + part_offset(parts, k, uv.x(), uv.y()) * n;
+      const Vec3f wrong = fb.base[i] + part_offset(wrong_parts, k, uv.x(), uv.y()) * n;
       dev.worst = std::max(dev.worst, double((fb.displaced[i] - expected).norm()));
-      dev.wrong = std::max(dev.wrong, double((fb.displaced[i] - (fb.base[i] + wrong_offset(k, uv.x(), uv.y()) * n)).norm()));
+      dev.wrong = std::max(dev.wrong, double((fb.displaced[i] - wrong).norm()));
     }
     dev.vertices += fb.base.size();
   }
@@ -214,15 +221,7 @@ TEST(TreeImageDisplacement, TrunkAndBranchAreDisplacedAtTheTreesTexcoordsAsTheCp
   TreeDesc wrong_tree = tree;
   wrong_tree.texture_displacement.midlevel += 0.01f;
   const auto wrong_parts = build_tree(wrong_tree, make_displacement(tree.displacement));
-  auto offset_of = [](const std::vector<TreePart>& ps) {
-    return [&ps](size_t k, float u, float v) {
-      float offset = 0;
-      ps[k].surface.position(u, v, &offset);
-      return offset;
-    };
-  };
-  const std::function<float(size_t, float, float)> cpp = offset_of(parts), wrong = offset_of(wrong_parts);
-  const Deviation dev = compare_tree_parts(scene, CameraModel(desc.camera, 200, 200), cpp, wrong);
+  const Deviation dev = compare_tree_parts(scene, CameraModel(desc.camera, 200, 200), parts, wrong_parts);
   RecordProperty("max_deviation_m", std::to_string(dev.worst));
   std::printf("  tree: %zu vertices, max deviation %.3g m (wrong midlevel %.3g m)\n", dev.vertices, dev.worst, dev.wrong);
   EXPECT_LT(dev.worst, kTolerance);
@@ -268,15 +267,7 @@ TEST(TreeImageDisplacement, OnStripBarkTheImageAddsToTheFractureDepth) {
   TreeDesc wrong_tree = tree;
   wrong_tree.texture_displacement.midlevel += 0.01f;
   const auto wrong_parts = parts_with(wrong_tree);
-  auto offset_of = [](const std::vector<TreePart>& ps) {
-    return [&ps](size_t k, float u, float v) {
-      float offset = 0;
-      ps[k].surface.position(u, v, &offset);
-      return offset;
-    };
-  };
-  const std::function<float(size_t, float, float)> cpp = offset_of(parts), wrong = offset_of(wrong_parts);
-  const Deviation dev = compare_tree_parts(scene, CameraModel(desc.camera, 200, 200), cpp, wrong);
+  const Deviation dev = compare_tree_parts(scene, CameraModel(desc.camera, 200, 200), parts, wrong_parts);
   RecordProperty("max_deviation_m", std::to_string(dev.worst));
   std::printf("  strip tree: %zu vertices, max deviation %.3g m (wrong midlevel %.3g m)\n", dev.vertices, dev.worst, dev.wrong);
   EXPECT_LT(dev.worst, kTolerance);
